@@ -1,0 +1,75 @@
+# gallop: build, test, demo, bench, report. `make demo` and `make check` install the Debian
+# packages that are missing when run as root (apt-get), or say what to install otherwise.
+
+CC      ?= cc
+CSTD    := -std=c11
+WARN    := -Wall -Wextra
+OPT     ?= -O2
+CFLAGS  ?=
+CPPFLAGS += -Iinclude -Isrc -I/usr/include/suitesparse -D_POSIX_C_SOURCE=200809L
+LIBS    := -lumfpack -lcholmod -lamd -lcolamd -lsuitesparseconfig -larpack -lgsl -lgslcblas -lfftw3 \
+           -linih -llapack -lblas -lm
+
+ifeq ($(SAN),1)
+  OPT := -O1 -g
+  SANFLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+  BUILD := build/san
+else
+  SANFLAGS :=
+  BUILD := build
+endif
+
+ALL_CFLAGS := $(CSTD) $(WARN) $(OPT) $(SANFLAGS) $(CFLAGS)
+
+LIB_SRC  := $(filter-out src/main.c src/cli_%.c,$(wildcard src/*.c))
+CLI_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,src/main.c $(wildcard src/cli_*.c))
+LIB_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(LIB_SRC))
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+TEST_SH  := $(wildcard tests/test_*.sh)
+
+DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-dev \
+            liblapack-dev libblas-dev pkg-config
+STAMP    := build/.deps-ok
+
+.PHONY: all deps demo check bench report clean fuzz
+all: $(BUILD)/gallop $(BUILD)/libgallop.a
+
+# ---- Debian packages ----
+$(STAMP):
+	@sh tools/deps.sh $(DEB_PKGS)
+	@mkdir -p build && touch $@
+deps: $(STAMP)
+
+$(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*.h src/*.h) | $(STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) -MMD -c $< -o $@
+
+$(BUILD)/libgallop.a: $(LIB_OBJ)
+	ar rcs $@ $^
+
+$(BUILD)/gallop: $(CLI_OBJ) $(BUILD)/libgallop.a
+	$(CC) $(ALL_CFLAGS) $^ $(LIBS) -o $@
+
+$(BUILD)/tests/%: tests/%.c tests/check.h $(BUILD)/libgallop.a
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) $< $(BUILD)/libgallop.a $(LIBS) -o $@
+
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d)
+
+# ---- the main job and the tests ----
+DEMO_SCENE ?= data/scenes/drake_300m.ini
+demo: $(BUILD)/gallop
+	./$(BUILD)/gallop modes $(DEMO_SCENE) -o out/demo
+
+check: $(BUILD)/gallop $(TEST_BIN)
+	@GALLOP=$(abspath $(BUILD)/gallop) bash tests/run.sh $(TEST_BIN) $(TEST_SH)
+
+bench: $(BUILD)/gallop
+	@bash tools/bench.sh $(BUILD)/gallop
+
+report: $(BUILD)/gallop
+	@bash notebooks-free-reports/make_report.sh $(BUILD)/gallop
+
+clean:
+	rm -rf build out

@@ -1,0 +1,40 @@
+/* main.c: the gallop command: dispatches to the sub-commands of src/cli_*.c (DESIGN.md
+ * "Command line"). */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+#include "gallop.h"
+
+static const struct {
+    const char *name;
+    gal_cli_fn fn;
+    const char *usage;
+} commands[] = {
+    {"version", gal_cli_version, "gallop version                         print the version"},
+};
+
+static void usage(FILE *fp)
+{
+    fprintf(fp, "usage: gallop COMMAND [ARGS]\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(fp, "  %s\n", commands[i].usage);
+    fprintf(fp, "\nexit status: 0 success, 1 the computation failed, 2 bad input\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "help")) {
+        usage(stdout);
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (!strcmp(argv[1], commands[i].name)) return commands[i].fn(argc - 1, argv + 1);
+    fprintf(stderr, "gallop: unknown command '%s'\n", argv[1]);
+    usage(stderr);
+    return 2;
+}

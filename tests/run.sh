@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Runs every test program given on the command line (and the shell tests), adds up the
+# "#summary P F" lines and ends with "N passed, N failed"; exits non-zero on any failure.
+set -u
+passed=0; failed=0
+for t in "$@"; do
+  name=$(basename "$t")
+  echo "== $name"
+  case "$t" in
+    *.sh) out=$(bash "$t" 2>&1); rc=$? ;;
+    *)    out=$("$t" 2>&1); rc=$? ;;
+  esac
+  printf '%s\n' "$out" | grep -v '^#summary'
+  sum=$(printf '%s\n' "$out" | grep '^#summary' | tail -n 1)
+  if [ -n "$sum" ]; then
+    read -r _ p f <<<"$sum"
+    passed=$((passed + p)); failed=$((failed + f))
+    if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+      echo "  FAIL $name exited with status $rc"; failed=$((failed + 1))
+    fi
+  else
+    echo "  FAIL $name: no summary (exit status $rc, crashed?)"; failed=$((failed + 1))
+  fi
+done
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
