@@ -1,0 +1,90 @@
+/* rod.h: the discrete Cosserat (Kirchhoff) rod of a conductor span (paper Eqs. 1-8; DESIGN.md
+ * "The rod"). Nodes carry positions, edges carry one twist angle each; material frames are the
+ * reference frames of the equilibrium tangents carried to the current tangents by the minimal
+ * rotation, turned by the twist angle. The elastic energy is a function of the configuration
+ * alone:
+ *   U = sum_e EA/2 (|e|/l0 - 1)^2 l0                        extension (Eq. 5, EA (v3 - 1)^2)
+ *     + sum_i EI |kb_i|^2 / lbar_i                          bending, isotropic (B1 = B2 = EI)
+ *     + sum_i GJ (theta_i - theta_{i-1} + mref_i)^2 / lbar_i  torsion
+ *     + sum_i m_i g z_i                                     gravity
+ * with kb_i = 2 t_{i-1} x t_i / (1 + t_{i-1} . t_i), lbar_i = l0_{i-1} + l0_i and mref_i the
+ * reference twist. The unloaded conductor is straight and untwisted (kbar = 0, twist bar = 0). */
+#ifndef GALLOP_ROD_H
+#define GALLOP_ROD_H
+
+#include <stddef.h>
+
+typedef struct gal_rod_params {
+    double length;            /* m, horizontal span L */
+    double height_difference; /* m, right support minus left */
+    int elements;             /* count */
+    double unstretched_length;/* m, L0 */
+    double EA;                /* N */
+    double EI;                /* N m^2; 0 with bending off */
+    double GJ;                /* N m^2/rad */
+    double mass;              /* kg/m, conductor plus ice */
+    double polar_inertia;     /* kg m^2/m */
+    double gravity;           /* m/s^2, 0 with gravity off */
+    int torsion;              /* twist unknowns present */
+    int twist_clamped;        /* twist fixed at both ends (else free) */
+} gal_rod_params;
+
+/* Compressed sparse column, upper triangle (row <= col), for the free degrees of freedom. */
+typedef struct gal_csc {
+    int n;        /* rows = columns */
+    int nnz;
+    int *colptr;  /* n + 1 */
+    int *rowind;  /* nnz */
+    double *val;  /* nnz */
+    int *diag;    /* n: index of the diagonal entry of each column */
+} gal_csc;
+
+/* The immutable model of a discretized span. The full configuration q holds 3 (elements + 1)
+ * node positions (m) followed, when torsion is on, by `elements` twist angles (rad). */
+typedef struct gal_rod {
+    gal_rod_params p;
+    int nn;             /* nodes = elements + 1 */
+    int nq;             /* size of the full configuration */
+    int ndof;           /* free degrees of freedom */
+    int *dof;           /* nq: index of each configuration entry among the free dofs, or -1 */
+    int *free_q;        /* ndof: configuration index of each free dof */
+    double *l0;         /* elements: rest lengths, m */
+    double *tbar;       /* 3 elements: reference unit tangents */
+    double *abar;       /* 3 elements: reference frame first directors (normal to tbar) */
+    double *node_mass;  /* nn: lumped translational mass, kg */
+    double *edge_inertia; /* elements: polar moment of inertia of each edge, kg m^2 */
+    double *q0;         /* nq: the configuration the reference frames were taken from */
+    gal_csc *K;         /* the tangent's pattern (values are scratch for gal_rod_tangent) */
+    int *slot_node;     /* per interior node: 11 x 11 map local dof pair -> K value index, or -1 */
+    int *slot_edge;     /* per edge: 6 x 6 map */
+} gal_rod;
+
+/* Build the model; the reference geometry q0 (nq entries; positions, twists) sets the reference
+ * frames (the equilibrium or its catenary start). NULL with a message on bad parameters. */
+gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0);
+gal_rod *gal_rod_free(gal_rod *rod);
+
+/* Energy U(q) (J), gradient dU/dq over the full configuration (forces = -grad; the entries of
+ * the fixed supports are the support reactions), and the tangent stiffness d2U/dq2 restricted to
+ * the free dofs, written into rod->K->val (and also returned in `K` when non-NULL, same pattern).
+ * `grad` and `K` may be NULL. Returns GAL_OK, or GAL_EFAIL on a degenerate configuration
+ * (zero-length or folded-back element). */
+int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *grad, gal_csc *K);
+
+/* Copy free entries of a configuration-sized vector to/from a dof-sized vector. */
+void gal_rod_gather(const gal_rod *rod, const double *full, double *free_part);
+void gal_rod_scatter(const gal_rod *rod, const double *free_part, double *full);
+
+/* The lumped mass matrix over the free dofs (diagonal, kg or kg m^2). */
+void gal_rod_mass_diag(const gal_rod *rod, double *mdiag);
+
+/* Axial tension of each element (N) and horizontal tension at the left support (N). */
+void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension);
+
+/* A copy of the pattern of K (values zeroed) for callers that keep their own matrix. */
+gal_csc *gal_csc_clone(const gal_csc *A);
+gal_csc *gal_csc_free(gal_csc *A);
+/* y = A x for the symmetric matrix stored as its upper triangle. */
+void gal_csc_symv(const gal_csc *A, const double *x, double *y);
+
+#endif

@@ -1,0 +1,456 @@
+/* rod.c: the discrete Cosserat rod (paper Eqs. 1-5, DESIGN.md "The rod"): energy, forces and the
+ * sparse tangent stiffness of extension, isotropic bending, torsion and gravity. The node stencil
+ * (bending and torsion) is differentiated exactly by forward-mode AD (ad.h); extension is
+ * differentiated by hand. */
+#include "gallop/core.h"
+#include "gallop/rod.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ad.h"
+
+#define NL 11   /* node stencil: x_{i-1}, x_i, x_{i+1} (9), theta_{i-1}, theta_i */
+#define EL 6    /* edge: x_j, x_{j+1} */
+
+/* ---- small 3-vector helpers ---- */
+static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static double norm3(const double *a) { return sqrt(dot3(a, a)); }
+
+/* ---- sparse pattern ---- */
+
+gal_csc *gal_csc_free(gal_csc *A)
+{
+    if (A) {
+        free(A->colptr);
+        free(A->rowind);
+        free(A->val);
+        free(A->diag);
+        free(A);
+    }
+    return NULL;
+}
+
+gal_csc *gal_csc_clone(const gal_csc *A)
+{
+    gal_csc *B = calloc(1, sizeof *B);
+    if (!B) return NULL;
+    B->n = A->n;
+    B->nnz = A->nnz;
+    B->colptr = malloc((size_t)(A->n + 1) * sizeof(int));
+    B->rowind = malloc((size_t)A->nnz * sizeof(int));
+    B->val = calloc((size_t)A->nnz, sizeof(double));
+    B->diag = malloc((size_t)A->n * sizeof(int));
+    if (!B->colptr || !B->rowind || !B->val || !B->diag) return gal_csc_free(B);
+    memcpy(B->colptr, A->colptr, (size_t)(A->n + 1) * sizeof(int));
+    memcpy(B->rowind, A->rowind, (size_t)A->nnz * sizeof(int));
+    memcpy(B->diag, A->diag, (size_t)A->n * sizeof(int));
+    return B;
+}
+
+void gal_csc_symv(const gal_csc *A, const double *x, double *y)
+{
+    memset(y, 0, (size_t)A->n * sizeof(double));
+    for (int j = 0; j < A->n; j++)
+        for (int p = A->colptr[j]; p < A->colptr[j + 1]; p++) {
+            int i = A->rowind[p];
+            y[i] += A->val[p] * x[j];            /* upper part A(i,j) */
+            if (i != j) y[j] += A->val[p] * x[i]; /* its mirror A(j,i) */
+        }
+}
+
+static int cmp_pair(const void *a, const void *b)
+{
+    const long *x = a, *y = b;
+    return (*x > *y) - (*x < *y);
+}
+
+/* Index of entry (i, j), i <= j, in the pattern, or -1. */
+static int csc_find(const gal_csc *A, int i, int j)
+{
+    int lo = A->colptr[j], hi = A->colptr[j + 1] - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        if (A->rowind[mid] == i) return mid;
+        if (A->rowind[mid] < i) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return -1;
+}
+
+/* Configuration indices of the node stencil at interior node i and of edge j. */
+static void node_stencil_q(const gal_rod *rod, int i, int *qi)
+{
+    for (int k = 0; k < 9; k++) qi[k] = 3 * (i - 1) + k;
+    if (rod->p.torsion) {
+        qi[9] = 3 * rod->nn + i - 1;
+        qi[10] = 3 * rod->nn + i;
+    } else {
+        qi[9] = qi[10] = -1;
+    }
+}
+
+static void edge_q(int j, int *qi)
+{
+    for (int k = 0; k < 6; k++) qi[k] = 3 * j + k;
+}
+
+static int build_pattern(gal_rod *rod)
+{
+    int nel = rod->p.elements, nn = rod->nn;
+    size_t cap = (size_t)(nn - 2) * NL * NL + (size_t)nel * EL * EL + 16;
+    long *pairs = malloc(cap * sizeof(long));
+    if (!pairs) return GAL_ENOMEM;
+    size_t np = 0;
+    int qi[NL];
+    long n = rod->ndof;
+    for (int i = 1; i <= nn - 2; i++) {
+        node_stencil_q(rod, i, qi);
+        for (int a = 0; a < NL; a++)
+            for (int b = 0; b < NL; b++) {
+                int da = qi[a] < 0 ? -1 : rod->dof[qi[a]], db = qi[b] < 0 ? -1 : rod->dof[qi[b]];
+                if (da >= 0 && db >= 0 && da <= db) pairs[np++] = (long)db * n + da;
+            }
+    }
+    for (int j = 0; j < nel; j++) {
+        edge_q(j, qi);
+        for (int a = 0; a < EL; a++)
+            for (int b = 0; b < EL; b++) {
+                int da = rod->dof[qi[a]], db = rod->dof[qi[b]];
+                if (da >= 0 && db >= 0 && da <= db) pairs[np++] = (long)db * n + da;
+            }
+    }
+    for (int d = 0; d < n; d++) pairs[np++] = (long)d * n + d; /* every diagonal */
+    qsort(pairs, np, sizeof(long), cmp_pair);
+    size_t nu = 0;
+    for (size_t k = 0; k < np; k++)
+        if (nu == 0 || pairs[k] != pairs[nu - 1]) pairs[nu++] = pairs[k];
+
+    gal_csc *A = calloc(1, sizeof *A);
+    if (!A) { free(pairs); return GAL_ENOMEM; }
+    A->n = (int)n;
+    A->nnz = (int)nu;
+    A->colptr = calloc((size_t)n + 1, sizeof(int));
+    A->rowind = malloc(nu * sizeof(int));
+    A->val = calloc(nu, sizeof(double));
+    A->diag = malloc((size_t)n * sizeof(int));
+    if (!A->colptr || !A->rowind || !A->val || !A->diag) {
+        free(pairs);
+        gal_csc_free(A);
+        return GAL_ENOMEM;
+    }
+    for (size_t k = 0; k < nu; k++) {
+        int col = (int)(pairs[k] / n), row = (int)(pairs[k] % n);
+        A->rowind[k] = row;
+        A->colptr[col + 1]++;
+    }
+    for (int j = 0; j < n; j++) A->colptr[j + 1] += A->colptr[j];
+    for (int j = 0; j < n; j++) A->diag[j] = csc_find(A, j, j);
+    free(pairs);
+    rod->K = A;
+
+    /* slot maps: where each local pair of a stencil lands in the value array */
+    rod->slot_node = malloc((size_t)(nn > 2 ? nn - 2 : 1) * NL * NL * sizeof(int));
+    rod->slot_edge = malloc((size_t)nel * EL * EL * sizeof(int));
+    if (!rod->slot_node || !rod->slot_edge) return GAL_ENOMEM;
+    for (int i = 1; i <= nn - 2; i++) {
+        int *s = rod->slot_node + (size_t)(i - 1) * NL * NL;
+        node_stencil_q(rod, i, qi);
+        for (int a = 0; a < NL; a++)
+            for (int b = 0; b < NL; b++) {
+                int da = qi[a] < 0 ? -1 : rod->dof[qi[a]], db = qi[b] < 0 ? -1 : rod->dof[qi[b]];
+                s[a * NL + b] = (da >= 0 && db >= 0 && da <= db) ? csc_find(A, da, db) : -1;
+            }
+    }
+    for (int j = 0; j < nel; j++) {
+        int *s = rod->slot_edge + (size_t)j * EL * EL;
+        edge_q(j, qi);
+        for (int a = 0; a < EL; a++)
+            for (int b = 0; b < EL; b++) {
+                int da = rod->dof[qi[a]], db = rod->dof[qi[b]];
+                s[a * EL + b] = (da >= 0 && db >= 0 && da <= db) ? csc_find(A, da, db) : -1;
+            }
+    }
+    return GAL_OK;
+}
+
+/* ---- construction ---- */
+
+gal_rod *gal_rod_free(gal_rod *rod)
+{
+    if (rod) {
+        free(rod->dof);
+        free(rod->free_q);
+        free(rod->l0);
+        free(rod->tbar);
+        free(rod->abar);
+        free(rod->node_mass);
+        free(rod->edge_inertia);
+        free(rod->q0);
+        gal_csc_free(rod->K);
+        free(rod->slot_node);
+        free(rod->slot_edge);
+        free(rod);
+    }
+    return NULL;
+}
+
+gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
+{
+    if (p->elements < 2 || !(p->length > 0) || !(p->unstretched_length > 0) || !(p->EA > 0) ||
+        !(p->EI >= 0) || !(p->mass > 0) || (p->torsion && (!(p->GJ > 0) || !(p->polar_inertia > 0)))) {
+        gal_error(GAL_EINPUT, "rod: invalid parameters (elements %d, length %g, L0 %g, EA %g, EI %g, "
+                  "GJ %g, mass %g, polar inertia %g)", p->elements, p->length, p->unstretched_length,
+                  p->EA, p->EI, p->GJ, p->mass, p->polar_inertia);
+        return NULL;
+    }
+    gal_rod *rod = calloc(1, sizeof *rod);
+    if (!rod) return NULL;
+    rod->p = *p;
+    int nel = p->elements, nn = nel + 1;
+    rod->nn = nn;
+    rod->nq = 3 * nn + (p->torsion ? nel : 0);
+    rod->dof = malloc((size_t)rod->nq * sizeof(int));
+    rod->free_q = malloc((size_t)rod->nq * sizeof(int));
+    rod->l0 = malloc((size_t)nel * sizeof(double));
+    rod->tbar = malloc((size_t)3 * nel * sizeof(double));
+    rod->abar = malloc((size_t)3 * nel * sizeof(double));
+    rod->node_mass = calloc((size_t)nn, sizeof(double));
+    rod->edge_inertia = calloc((size_t)nel, sizeof(double));
+    rod->q0 = malloc((size_t)rod->nq * sizeof(double));
+    if (!rod->dof || !rod->free_q || !rod->l0 || !rod->tbar || !rod->abar || !rod->node_mass ||
+        !rod->edge_inertia || !rod->q0) {
+        gal_error(GAL_ENOMEM, "rod: out of memory for %d elements", nel);
+        return gal_rod_free(rod);
+    }
+    memcpy(rod->q0, q0, (size_t)rod->nq * sizeof(double));
+
+    /* Free dofs numbered node by node (positions, then the twist of the edge that follows), so
+     * that the tangent is banded before any reordering. */
+    for (int k = 0; k < rod->nq; k++) rod->dof[k] = -1;
+    int nd = 0;
+    for (int i = 0; i < nn; i++) {
+        if (i > 0 && i < nn - 1)
+            for (int k = 0; k < 3; k++) rod->free_q[nd] = 3 * i + k, rod->dof[3 * i + k] = nd++;
+        if (p->torsion && i < nel) {
+            int fixed = p->twist_clamped && (i == 0 || i == nel - 1);
+            if (!fixed) rod->free_q[nd] = 3 * nn + i, rod->dof[3 * nn + i] = nd++;
+        }
+    }
+    rod->ndof = nd;
+
+    double l0 = p->unstretched_length / nel;
+    for (int j = 0; j < nel; j++) {
+        rod->l0[j] = l0;
+        rod->node_mass[j] += 0.5 * p->mass * l0;
+        rod->node_mass[j + 1] += 0.5 * p->mass * l0;
+        rod->edge_inertia[j] = p->polar_inertia * l0;
+        /* reference frame: unit tangent of q0 and a first director normal to it, chosen as the
+         * horizontal normal y carried into the plane normal to the tangent */
+        double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j;
+        for (int k = 0; k < 3; k++) t[k] = q0[3 * (j + 1) + k] - q0[3 * j + k];
+        double le = norm3(t);
+        if (!(le > 0)) {
+            gal_error(GAL_EINPUT, "rod: element %d of the reference geometry has zero length", j);
+            return gal_rod_free(rod);
+        }
+        for (int k = 0; k < 3; k++) t[k] /= le;
+        double y[3] = {0, 1, 0}, ty = dot3(t, y);
+        for (int k = 0; k < 3; k++) a[k] = y[k] - ty * t[k];
+        double na = norm3(a);
+        if (na < 1e-6) { /* tangent along y: fall back to z */
+            double z[3] = {0, 0, 1}, tz = dot3(t, z);
+            for (int k = 0; k < 3; k++) a[k] = z[k] - tz * t[k];
+            na = norm3(a);
+        }
+        for (int k = 0; k < 3; k++) a[k] /= na;
+    }
+    if (build_pattern(rod) != GAL_OK) {
+        gal_error(GAL_ENOMEM, "rod: out of memory building the stiffness pattern");
+        return gal_rod_free(rod);
+    }
+    return rod;
+}
+
+void gal_rod_gather(const gal_rod *rod, const double *full, double *free_part)
+{
+    for (int d = 0; d < rod->ndof; d++) free_part[d] = full[rod->free_q[d]];
+}
+
+void gal_rod_scatter(const gal_rod *rod, const double *free_part, double *full)
+{
+    for (int d = 0; d < rod->ndof; d++) full[rod->free_q[d]] = free_part[d];
+}
+
+void gal_rod_mass_diag(const gal_rod *rod, double *mdiag)
+{
+    for (int d = 0; d < rod->ndof; d++) {
+        int q = rod->free_q[d];
+        mdiag[d] = q < 3 * rod->nn ? rod->node_mass[q / 3] : rod->edge_inertia[q - 3 * rod->nn];
+    }
+}
+
+void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension)
+{
+    for (int j = 0; j < rod->p.elements; j++) {
+        double e[3];
+        for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
+        tension[j] = rod->p.EA * (norm3(e) / rod->l0[j] - 1.0);
+    }
+}
+
+/* ---- the node stencil: bending and torsion at interior node i ----
+ * Variables: e0 = x_i - x_{i-1}, e1 = x_{i+1} - x_i, theta0, theta1. */
+
+/* Minimal rotation of a (normal to tb) from unit tangent tb to unit tangent t:
+ * P(a) = a - (t . a) / (1 + tb . t) (tb + t). Constant tb and a. */
+static void transport_const(ad3 *r, const double *tb, const double *a, const ad3 *t)
+{
+    ad ta = ad3_dotc(t, a);
+    ad den = ad_addc(ad3_dotc(t, tb), 1.0);
+    ad f = ad_div(ta, den);
+    for (int k = 0; k < 3; k++) r->c[k] = ad_sub(ad_const(a[k]), ad_mul(f, ad_addc(t->c[k], tb[k])));
+}
+
+static ad stencil_energy(const gal_rod *rod, int i, const double *q, double theta0, double theta1)
+{
+    const gal_rod_params *p = &rod->p;
+    double lbar = rod->l0[i - 1] + rod->l0[i];
+    ad3 e0, e1, t0, t1;
+    for (int k = 0; k < 3; k++) {
+        e0.c[k] = ad_var(q[3 * i + k] - q[3 * (i - 1) + k], k);
+        e1.c[k] = ad_var(q[3 * (i + 1) + k] - q[3 * i + k], 3 + k);
+    }
+    ad inv0 = ad_inv(ad_sqrt(ad3_dot(&e0, &e0)));
+    ad inv1 = ad_inv(ad_sqrt(ad3_dot(&e1, &e1)));
+    ad3_scale(&t0, &e0, inv0);
+    ad3_scale(&t1, &e1, inv1);
+    ad c = ad3_dot(&t0, &t1);
+    ad E = ad_const(0.0);
+    if (p->EI > 0) {
+        /* |kb|^2 = 4 |t0 x t1|^2 / (1 + c)^2 = 4 (1 - c) / (1 + c) */
+        ad kb2 = ad_scale(ad_div(ad_addc(ad_scale(c, -1.0), 1.0), ad_addc(c, 1.0)), 4.0);
+        E = ad_add(E, ad_scale(kb2, p->EI / lbar));
+    }
+    if (p->torsion) {
+        ad3 a0, a1, u, w;
+        transport_const(&a0, rod->tbar + 3 * (i - 1), rod->abar + 3 * (i - 1), &t0);
+        transport_const(&a1, rod->tbar + 3 * i, rod->abar + 3 * i, &t1);
+        /* u = P_{t0 -> t1}(a0) = a0 - (t1 . a0) / (1 + c) (t0 + t1) */
+        ad f = ad_div(ad3_dot(&t1, &a0), ad_addc(c, 1.0));
+        for (int k = 0; k < 3; k++) u.c[k] = ad_sub(a0.c[k], ad_mul(f, ad_add(t0.c[k], t1.c[k])));
+        ad3_cross(&w, &u, &a1);
+        ad mref = ad_atan2(ad3_dot(&w, &t1), ad3_dot(&u, &a1)); /* signed angle u -> a1 about t1 */
+        ad m = ad_add(mref, ad_add(ad_var(theta1, 7), ad_scale(ad_var(theta0, 6), -1.0)));
+        E = ad_add(E, ad_scale(ad_sq(m), p->GJ / lbar));
+    }
+    return E;
+}
+
+/* Node-space incidence of the stencil variables: local node variable a (0..10) is the sum of
+ * coef * (edge variable idx). */
+static const int inc_n[NL] = {1, 1, 1, 2, 2, 2, 1, 1, 1, 1, 1};
+static const int inc_v[NL][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 3}, {1, 4}, {2, 5},
+                                 {3, 0}, {4, 0}, {5, 0}, {6, 0}, {7, 0}};
+static const double inc_c[NL][2] = {{-1, 0}, {-1, 0}, {-1, 0}, {1, -1}, {1, -1}, {1, -1},
+                                    {1, 0},  {1, 0},  {1, 0},  {1, 0},  {1, 0}};
+
+static double hpacked(const double *h, int a, int b)
+{
+    if (a > b) { int t = a; a = b; b = t; }
+    return h[a * AD_NV - a * (a - 1) / 2 + (b - a)];
+}
+
+int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *grad, gal_csc *K)
+{
+    const gal_rod_params *p = &rod->p;
+    int nn = rod->nn, nel = p->elements;
+    gal_csc *KK = K;
+    double U = 0.0;
+    if (grad) memset(grad, 0, (size_t)rod->nq * sizeof(double));
+    if (KK) memset(KK->val, 0, (size_t)KK->nnz * sizeof(double));
+
+    /* extension, per edge: U = EA/2 (|e|/l0 - 1)^2 l0 */
+    for (int j = 0; j < nel; j++) {
+        double e[3], l0 = rod->l0[j];
+        for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
+        double le = norm3(e);
+        if (!(le > 1e-12 * l0)) return gal_error(GAL_EFAIL, "rod: element %d has collapsed (length %g m)", j, le);
+        double eps = le / l0 - 1.0, t[3] = {e[0] / le, e[1] / le, e[2] / le};
+        U += 0.5 * p->EA * eps * eps * l0;
+        if (grad)
+            for (int k = 0; k < 3; k++) {
+                double g = p->EA * eps * t[k];   /* dU/de = EA eps t */
+                grad[3 * j + k] -= g;
+                grad[3 * (j + 1) + k] += g;
+            }
+        if (KK) {
+            /* d2U/de2 = EA/l0 t t^T + EA eps/|e| (I - t t^T) */
+            double H[3][3];
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++)
+                    H[a][b] = p->EA / l0 * t[a] * t[b] + p->EA * eps / le * ((a == b) - t[a] * t[b]);
+            const int *s = rod->slot_edge + (size_t)j * EL * EL;
+            for (int a = 0; a < EL; a++)
+                for (int b = 0; b < EL; b++) {
+                    int sl = s[a * EL + b];
+                    if (sl < 0) continue;
+                    double sg = ((a < 3) == (b < 3)) ? 1.0 : -1.0;
+                    KK->val[sl] += sg * H[a % 3][b % 3];
+                }
+        }
+    }
+
+    /* bending and torsion, per interior node */
+    if (p->EI > 0 || p->torsion) {
+        for (int i = 1; i <= nn - 2; i++) {
+            double th0 = p->torsion ? q[3 * nn + i - 1] : 0.0, th1 = p->torsion ? q[3 * nn + i] : 0.0;
+            double c = 0;
+            {
+                double e0[3], e1[3];
+                for (int k = 0; k < 3; k++) {
+                    e0[k] = q[3 * i + k] - q[3 * (i - 1) + k];
+                    e1[k] = q[3 * (i + 1) + k] - q[3 * i + k];
+                }
+                c = dot3(e0, e1) / (norm3(e0) * norm3(e1));
+            }
+            if (!(c > -0.999))
+                return gal_error(GAL_EFAIL, "rod: the rod folds back on itself at node %d", i);
+            ad E = stencil_energy(rod, i, q, th0, th1);
+            U += E.v;
+            int qi[NL];
+            node_stencil_q(rod, i, qi);
+            if (grad)
+                for (int a = 0; a < NL; a++) {
+                    if (qi[a] < 0) continue;
+                    double g = 0;
+                    for (int r = 0; r < inc_n[a]; r++) g += inc_c[a][r] * E.g[inc_v[a][r]];
+                    grad[qi[a]] += g;
+                }
+            if (KK) {
+                const int *s = rod->slot_node + (size_t)(i - 1) * NL * NL;
+                for (int a = 0; a < NL; a++)
+                    for (int b = 0; b < NL; b++) {
+                        int sl = s[a * NL + b];
+                        if (sl < 0) continue;
+                        double h = 0;
+                        for (int r = 0; r < inc_n[a]; r++)
+                            for (int t = 0; t < inc_n[b]; t++)
+                                h += inc_c[a][r] * inc_c[b][t] * hpacked(E.h, inc_v[a][r], inc_v[b][t]);
+                        KK->val[sl] += h;
+                    }
+            }
+        }
+    }
+
+    /* gravity: U = sum m_i g z_i */
+    if (p->gravity != 0)
+        for (int i = 0; i < nn; i++) {
+            U += rod->node_mass[i] * p->gravity * q[3 * i + 2];
+            if (grad) grad[3 * i + 2] += rod->node_mass[i] * p->gravity;
+        }
+    if (energy) *energy = U;
+    if (!isfinite(U)) return gal_error(GAL_EFAIL, "rod: the energy is not finite");
+    return GAL_OK;
+}

@@ -1,0 +1,158 @@
+/* test_rod.c: the discrete rod's forces against finite differences of its energy, its tangent
+ * stiffness against finite differences of its forces, and invariances. */
+#include "check.h"
+#include "gallop.h"
+#include "gallop/rod.h"
+
+#include <gsl/gsl_rng.h>
+
+/* A rod on a random 3-D curve near a sagged chord, with random twists. */
+static gal_rod *random_rod(int nel, int torsion, int clamped, double EA, double EI, double **q,
+                           gsl_rng *r)
+{
+    gal_rod_params p = {.length = 100, .height_difference = 10, .elements = nel,
+                        .unstretched_length = 101, .EA = EA, .EI = EI, .GJ = 300,
+                        .mass = 1.5, .polar_inertia = 2e-4, .gravity = 9.81,
+                        .torsion = torsion, .twist_clamped = clamped};
+    int nq = 3 * (nel + 1) + (torsion ? nel : 0);
+    double *q0 = calloc((size_t)nq, sizeof(double));
+    *q = calloc((size_t)nq, sizeof(double));
+    for (int i = 0; i <= nel; i++) {
+        double s = (double)i / nel;
+        q0[3 * i] = 100 * s;
+        q0[3 * i + 2] = 10 * s - 8 * s * (1 - s);
+    }
+    gal_rod *rod = gal_rod_alloc(&p, q0);
+    for (int k = 0; k < nq; k++) (*q)[k] = q0[k];
+    /* perturb the free entries: positions by up to 0.5 m, twists by up to 1 rad */
+    for (int d = 0; d < rod->ndof; d++) {
+        int k = rod->free_q[d];
+        (*q)[k] += (k < 3 * (nel + 1) ? 0.5 : 1.0) * (2 * gsl_rng_uniform(r) - 1);
+    }
+    free(q0);
+    return rod;
+}
+
+static void check_derivatives(int torsion, int clamped, double EA, double EI)
+{
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(r, 7);
+    double *q;
+    gal_rod *rod = random_rod(12, torsion, clamped, EA, EI, &q, r);
+    CHECK(rod != NULL, "alloc: %s", gal_error_message());
+    if (!rod) return;
+    int nq = rod->nq, n = rod->ndof;
+    double *g = malloc(nq * sizeof(double)), *gp = malloc(nq * sizeof(double)),
+           *gm = malloc(nq * sizeof(double));
+    double U;
+    CHECK(gal_rod_eval(rod, q, &U, g, rod->K) == GAL_OK, "eval");
+    gal_csc *K = gal_csc_clone(rod->K);
+    memcpy(K->val, rod->K->val, K->nnz * sizeof(double));
+
+    /* forces: central differences of the energy over every configuration entry (supports too:
+     * their gradient is the support reaction) */
+    double maxerr = 0, maxg = 0;
+    for (int k = 0; k < nq; k++) {
+        double h = k < 3 * rod->nn ? 1e-5 : 1e-6, save = q[k], Up, Um;
+        q[k] = save + h; gal_rod_eval(rod, q, &Up, NULL, NULL);
+        q[k] = save - h; gal_rod_eval(rod, q, &Um, NULL, NULL);
+        q[k] = save;
+        double fd = (Up - Um) / (2 * h);
+        maxerr = fmax(maxerr, fabs(fd - g[k]));
+        maxg = fmax(maxg, fabs(g[k]));
+    }
+    CHECK(maxerr <= 1e-6 * maxg, "gradient vs FD of energy: max error %g, max |g| %g", maxerr, maxg);
+
+    /* tangent: columns by central differences of the gradient */
+    double *col = malloc(n * sizeof(double)), *ej = calloc(n, sizeof(double));
+    double kerr = 0, kmax = 0;
+    for (int j = 0; j < n; j++) {
+        int k = rod->free_q[j];
+        double h = k < 3 * rod->nn ? 1e-6 : 1e-7, save = q[k];
+        q[k] = save + h; gal_rod_eval(rod, q, NULL, gp, NULL);
+        q[k] = save - h; gal_rod_eval(rod, q, NULL, gm, NULL);
+        q[k] = save;
+        ej[j] = 1; gal_csc_symv(K, ej, col); ej[j] = 0;
+        for (int i = 0; i < n; i++) {
+            double fd = (gp[rod->free_q[i]] - gm[rod->free_q[i]]) / (2 * h);
+            kerr = fmax(kerr, fabs(fd - col[i]));
+            kmax = fmax(kmax, fabs(col[i]));
+        }
+    }
+    CHECK(kerr <= 1e-5 * kmax, "tangent vs FD of forces: max error %g, max |K| %g", kerr, kmax);
+    printf("    (torsion %d, clamped %d, EI %g: force error %.2g of %.2g, tangent error %.2g of %.2g)\n",
+           torsion, clamped, EI, maxerr, maxg, kerr, kmax);
+    free(col); free(ej); free(g); free(gp); free(gm); free(q);
+    gal_csc_free(K);
+    gal_rod_free(rod);
+    gsl_rng_free(r);
+}
+
+/* EA small so that bending and torsion are not hidden behind extension, then a real conductor */
+static void test_derivatives_bending_torsion(void) { check_derivatives(1, 1, 1.0, 50.0); }
+static void test_derivatives_torsion_only(void) { check_derivatives(1, 1, 1.0, 0.0); }
+static void test_derivatives_free_twist(void) { check_derivatives(1, 0, 1.0, 50.0); }
+static void test_derivatives_bending_only(void) { check_derivatives(0, 1, 1.0, 50.0); }
+static void test_derivatives_conductor(void) { check_derivatives(1, 1, 1e6, 50.0); }
+static void test_derivatives_cable(void) { check_derivatives(0, 1, 1e6, 0.0); }
+
+/* A rigid rotation of a stretched, bent rod (gravity off) leaves its energy alone. (With torsion the
+ * twist angles are measured from frames fixed in space, so a rotation of the positions alone is not
+ * a rigid motion of the material frames.) */
+static void test_rigid_rotation_invariance(void)
+{
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(r, 3);
+    double *q;
+    gal_rod *rod = random_rod(10, 0, 1, 1e6, 20.0, &q, r);
+    rod->p.gravity = 0;
+    double U0, U1;
+    gal_rod_eval(rod, q, &U0, NULL, NULL);
+    /* rotate all nodes by 20 degrees about x (the tangents move off their reference: the
+     * reference twist must follow) */
+    double c = cos(0.35), s = sin(0.35);
+    for (int i = 0; i < rod->nn; i++) {
+        double y = q[3 * i + 1], z = q[3 * i + 2];
+        q[3 * i + 1] = c * y - s * z;
+        q[3 * i + 2] = s * y + c * z;
+    }
+    gal_rod_eval(rod, q, &U1, NULL, NULL);
+    CHECK_REL(U1, U0, 1e-10);
+    free(q);
+    gal_rod_free(rod);
+    gsl_rng_free(r);
+}
+
+/* The twist energy of a straight rod twisted uniformly: GJ phi^2 / (2 L). */
+static void test_uniform_twist_energy(void)
+{
+    int nel = 20;
+    gal_rod_params p = {.length = 10, .elements = nel, .unstretched_length = 10, .EA = 1e6,
+                        .EI = 0, .GJ = 250, .mass = 1, .polar_inertia = 1e-4, .torsion = 1,
+                        .twist_clamped = 1};
+    double *q = calloc(4 * nel + 3, sizeof(double));
+    for (int i = 0; i <= nel; i++) q[3 * i] = 10.0 * i / nel;
+    gal_rod *rod = gal_rod_alloc(&p, q);
+    double phi = 2.0; /* total twist, rad, between the centres of the end edges */
+    for (int j = 0; j < nel; j++) q[3 * (nel + 1) + j] = phi * j / (nel - 1);
+    double U;
+    gal_rod_eval(rod, q, &U, NULL, NULL);
+    /* the twist is spread over nel-1 interior nodes, lengths from end-edge centre to centre */
+    double Lt = 10.0 * (nel - 1) / nel;
+    CHECK_REL(U, p.GJ * phi * phi / (2 * Lt), 1e-12);
+    free(q);
+    gal_rod_free(rod);
+}
+
+int main(void)
+{
+    RUN(test_derivatives_bending_torsion);
+    RUN(test_derivatives_torsion_only);
+    RUN(test_derivatives_free_twist);
+    RUN(test_derivatives_bending_only);
+    RUN(test_derivatives_conductor);
+    RUN(test_derivatives_cable);
+    RUN(test_rigid_rotation_invariance);
+    RUN(test_uniform_twist_energy);
+    return CHECK_SUMMARY();
+}
