@@ -1,7 +1,6 @@
 /* rod.c: the discrete Cosserat rod (paper Eqs. 1-5, DESIGN.md "The rod"): energy, forces and the
  * sparse tangent stiffness of extension, isotropic bending, torsion and gravity. The node stencil
- * (bending and torsion) is differentiated exactly by forward-mode AD (ad.h); extension is
- * differentiated by hand. */
+ * (bending and torsion) and extension are differentiated in closed form. */
 #include "gallop/core.h"
 #include "gallop/rod.h"
 
@@ -9,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ad.h"
 
 #define NL 11   /* node stencil: x_{i-1}, x_i, x_{i+1} (9), theta_{i-1}, theta_i */
 #define EL 6    /* edge: x_j, x_{j+1} */
@@ -17,6 +15,11 @@
 /* ---- small 3-vector helpers ---- */
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 static double norm3(const double *a) { return sqrt(dot3(a, a)); }
+static void cross3(const double *a, const double *b, double *r)
+{
+    double t0 = a[1] * b[2] - a[2] * b[1], t1 = a[2] * b[0] - a[0] * b[2], t2 = a[0] * b[1] - a[1] * b[0];
+    r[0] = t0, r[1] = t1, r[2] = t2;
+}
 
 /* ---- sparse pattern ---- */
 
@@ -240,12 +243,8 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
     }
     rod->ndof = nd;
 
-    double l0 = p->unstretched_length / nel;
+    gal_rod_set_unstretched_length(rod, p->unstretched_length);
     for (int j = 0; j < nel; j++) {
-        rod->l0[j] = l0;
-        rod->node_mass[j] += 0.5 * p->mass * l0;
-        rod->node_mass[j + 1] += 0.5 * p->mass * l0;
-        rod->edge_inertia[j] = p->polar_inertia * l0;
         /* reference frame: unit tangent of q0 and a first director normal to it, chosen as the
          * horizontal normal y carried into the plane normal to the tangent */
         double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j;
@@ -271,6 +270,20 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
         return gal_rod_free(rod);
     }
     return rod;
+}
+
+void gal_rod_set_unstretched_length(gal_rod *rod, double L0)
+{
+    int nel = rod->p.elements;
+    double l0 = L0 / nel;
+    rod->p.unstretched_length = L0;
+    for (int i = 0; i < rod->nn; i++) rod->node_mass[i] = 0;
+    for (int j = 0; j < nel; j++) {
+        rod->l0[j] = l0;
+        rod->node_mass[j] += 0.5 * rod->p.mass * l0;
+        rod->node_mass[j + 1] += 0.5 * rod->p.mass * l0;
+        rod->edge_inertia[j] = rod->p.polar_inertia * l0;
+    }
 }
 
 void gal_rod_gather(const gal_rod *rod, const double *full, double *free_part)
@@ -301,49 +314,144 @@ void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension)
 }
 
 /* ---- the node stencil: bending and torsion at interior node i ----
- * Variables: e0 = x_i - x_{i-1}, e1 = x_{i+1} - x_i, theta0, theta1. */
+ * Variables: e0 = x_i - x_{i-1}, e1 = x_{i+1} - x_i (6), theta0, theta1 (2). Gradient g[8] and
+ * Hessian H[8][8] of the stencil energy, in closed form. */
 
-/* Minimal rotation of a (normal to tb) from unit tangent tb to unit tangent t:
- * P(a) = a - (t . a) / (1 + tb . t) (tb + t). Constant tb and a. */
-static void transport_const(ad3 *r, const double *tb, const double *a, const ad3 *t)
+typedef double m33[3][3];
+
+/* [a]_x b = a x b */
+static void skew(const double *a, m33 S)
 {
-    ad ta = ad3_dotc(t, a);
-    ad den = ad_addc(ad3_dotc(t, tb), 1.0);
-    ad f = ad_div(ta, den);
-    for (int k = 0; k < 3; k++) r->c[k] = ad_sub(ad_const(a[k]), ad_mul(f, ad_addc(t->c[k], tb[k])));
+    S[0][0] = 0, S[0][1] = -a[2], S[0][2] = a[1];
+    S[1][0] = a[2], S[1][1] = 0, S[1][2] = -a[0];
+    S[2][0] = -a[1], S[2][1] = a[0], S[2][2] = 0;
 }
 
-static ad stencil_energy(const gal_rod *rod, int i, const double *q, double theta0, double theta1)
+/* C = A B */
+static void mul33(m33 A, m33 B, m33 C)
+{
+    m33 T;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) T[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
+    memcpy(C, T, sizeof T);
+}
+
+/* Half-angle rotation vector between unit vectors: g(u, v) = u x v / (1 + u . v), and its
+ * derivatives dg/du = -s [v]_x - s^2 (u x v) v^T, dg/dv = s [u]_x - s^2 (u x v) u^T, s = 1/(1+u.v). */
+static void halfrot(const double *u, const double *v, double *g, m33 Du, m33 Dv)
+{
+    double s = 1.0 / (1.0 + dot3(u, v)), w[3];
+    cross3(u, v, w);
+    for (int k = 0; k < 3; k++) g[k] = s * w[k];
+    if (Du) {
+        skew(v, Du);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) Du[i][j] = -s * Du[i][j] - s * s * w[i] * v[j];
+    }
+    if (Dv) {
+        skew(u, Dv);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) Dv[i][j] = s * Dv[i][j] - s * s * w[i] * u[j];
+    }
+}
+
+/* Parallel transport of a (normal to tb) from unit tangent tb to unit tangent t. */
+static void transport(const double *tb, const double *a, const double *t, double *r)
+{
+    double f = dot3(t, a) / (1.0 + dot3(tb, t));
+    for (int k = 0; k < 3; k++) r[k] = a[k] - f * (tb[k] + t[k]);
+}
+
+/* Energy, gradient (8) and, when H != NULL, Hessian (8 x 8) of the stencil at node i. */
+static double stencil(const gal_rod *rod, int i, const double *q, double *g, double (*H)[8])
 {
     const gal_rod_params *p = &rod->p;
     double lbar = rod->l0[i - 1] + rod->l0[i];
-    ad3 e0, e1, t0, t1;
+    double e0[3], e1[3], t0[3], t1[3];
     for (int k = 0; k < 3; k++) {
-        e0.c[k] = ad_var(q[3 * i + k] - q[3 * (i - 1) + k], k);
-        e1.c[k] = ad_var(q[3 * (i + 1) + k] - q[3 * i + k], 3 + k);
+        e0[k] = q[3 * i + k] - q[3 * (i - 1) + k];
+        e1[k] = q[3 * (i + 1) + k] - q[3 * i + k];
     }
-    ad inv0 = ad_inv(ad_sqrt(ad3_dot(&e0, &e0)));
-    ad inv1 = ad_inv(ad_sqrt(ad3_dot(&e1, &e1)));
-    ad3_scale(&t0, &e0, inv0);
-    ad3_scale(&t1, &e1, inv1);
-    ad c = ad3_dot(&t0, &t1);
-    ad E = ad_const(0.0);
+    double n0 = norm3(e0), n1 = norm3(e1);
+    for (int k = 0; k < 3; k++) t0[k] = e0[k] / n0, t1[k] = e1[k] / n1;
+    double c = dot3(t0, t1);
+    m33 P0, P1;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+            P0[a][b] = (a == b) - t0[a] * t0[b];
+            P1[a][b] = (a == b) - t1[a] * t1[b];
+        }
+    double E = 0;
+    memset(g, 0, 8 * sizeof(double));
+    if (H) memset(H, 0, 64 * sizeof(double));
+
     if (p->EI > 0) {
-        /* |kb|^2 = 4 |t0 x t1|^2 / (1 + c)^2 = 4 (1 - c) / (1 + c) */
-        ad kb2 = ad_scale(ad_div(ad_addc(ad_scale(c, -1.0), 1.0), ad_addc(c, 1.0)), 4.0);
-        E = ad_add(E, ad_scale(kb2, p->EI / lbar));
+        /* E = k f(c), f = (1 - c)/(1 + c) = |kb|^2 / 4, k = 4 EI / lbar */
+        double k = 4.0 * p->EI / lbar, f = (1 - c) / (1 + c);
+        double f1 = -2.0 / ((1 + c) * (1 + c)), f2 = 4.0 / ((1 + c) * (1 + c) * (1 + c));
+        double a0[3], a1[3]; /* dc/de0 = (t1 - c t0)/n0, dc/de1 = (t0 - c t1)/n1 */
+        for (int d = 0; d < 3; d++) a0[d] = (t1[d] - c * t0[d]) / n0, a1[d] = (t0[d] - c * t1[d]) / n1;
+        E += k * f;
+        for (int d = 0; d < 3; d++) g[d] += k * f1 * a0[d], g[3 + d] += k * f1 * a1[d];
+        if (H) {
+            double gc[6] = {a0[0], a0[1], a0[2], a1[0], a1[1], a1[2]};
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) {
+                    /* d2c/de0^2 = -(t0 a0^T + a0 t0^T + c P0/n0)/n0, d2c/de0 de1 = (P1/n1 - t0 a1^T)/n0 */
+                    double c00 = -(t0[a] * a0[b] + a0[a] * t0[b] + c * P0[a][b] / n0) / n0;
+                    double c11 = -(t1[a] * a1[b] + a1[a] * t1[b] + c * P1[a][b] / n1) / n1;
+                    double c01 = (P1[a][b] / n1 - t0[a] * a1[b]) / n0;
+                    H[a][b] += k * (f2 * gc[a] * gc[b] + f1 * c00);
+                    H[3 + a][3 + b] += k * (f2 * gc[3 + a] * gc[3 + b] + f1 * c11);
+                    H[a][3 + b] += k * (f2 * gc[a] * gc[3 + b] + f1 * c01);
+                    H[3 + b][a] = H[a][3 + b];
+                }
+        }
     }
+
     if (p->torsion) {
-        ad3 a0, a1, u, w;
-        transport_const(&a0, rod->tbar + 3 * (i - 1), rod->abar + 3 * (i - 1), &t0);
-        transport_const(&a1, rod->tbar + 3 * i, rod->abar + 3 * i, &t1);
-        /* u = P_{t0 -> t1}(a0) = a0 - (t1 . a0) / (1 + c) (t0 + t1) */
-        ad f = ad_div(ad3_dot(&t1, &a0), ad_addc(c, 1.0));
-        for (int k = 0; k < 3; k++) u.c[k] = ad_sub(a0.c[k], ad_mul(f, ad_add(t0.c[k], t1.c[k])));
-        ad3_cross(&w, &u, &a1);
-        ad mref = ad_atan2(ad3_dot(&w, &t1), ad3_dot(&u, &a1)); /* signed angle u -> a1 about t1 */
-        ad m = ad_add(mref, ad_add(ad_var(theta1, 7), ad_scale(ad_var(theta0, 6), -1.0)));
-        E = ad_add(E, ad_scale(ad_sq(m), p->GJ / lbar));
+        const double *tb0 = rod->tbar + 3 * (i - 1), *tb1 = rod->tbar + 3 * i;
+        double A0[3], A1[3], u[3], w[3];
+        transport(tb0, rod->abar + 3 * (i - 1), t0, A0); /* reference director of edge i-1 */
+        transport(tb1, rod->abar + 3 * i, t1, A1);        /* and of edge i */
+        transport(t0, A0, t1, u);                         /* edge i-1's carried across node i */
+        cross3(u, A1, w);
+        double mref = atan2(dot3(w, t1), dot3(u, A1));    /* signed angle u -> A1 about t1 */
+        double th0 = q[3 * rod->nn + i - 1], th1 = q[3 * rod->nn + i];
+        double m = th1 - th0 + mref, kt = p->GJ / lbar;
+        /* d mref/de0 = [g(t0,t1) + g(tb0,t0)]/n0, d mref/de1 = [g(t0,t1) - g(tb1,t1)]/n1: the
+         * curvature binormal's share (Bergou et al. 2010) plus the turn of each reference frame
+         * about its own tangent as it is carried from the reference tangent */
+        double gA[3], gB0[3], gB1[3];
+        m33 DAu, DAv, DB0, DB1;
+        halfrot(t0, t1, gA, H ? DAu : NULL, H ? DAv : NULL);
+        halfrot(tb0, t0, gB0, NULL, H ? DB0 : NULL);
+        halfrot(tb1, t1, gB1, NULL, H ? DB1 : NULL);
+        double gm[8];
+        for (int d = 0; d < 3; d++) gm[d] = (gA[d] + gB0[d]) / n0, gm[3 + d] = (gA[d] - gB1[d]) / n1;
+        gm[6] = -1, gm[7] = 1;
+        E += kt * m * m;
+        for (int a = 0; a < 8; a++) g[a] += 2 * kt * m * gm[a];
+        if (H) {
+            m33 X0, X1, Y0, Y1;
+            mul33(DAu, P0, X0); /* dA/de0 * n0 */
+            mul33(DAv, P1, X1); /* dA/de1 * n1 */
+            mul33(DB0, P0, Y0); /* dB0/de0 * n0 */
+            mul33(DB1, P1, Y1); /* dB1/de1 * n1 */
+            double Hm[6][6];
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) {
+                    Hm[a][b] = (X0[a][b] + Y0[a][b]) / (n0 * n0) - (gA[a] + gB0[a]) * t0[b] / (n0 * n0);
+                    Hm[a][3 + b] = X1[a][b] / (n0 * n1);
+                    Hm[3 + a][b] = X0[a][b] / (n0 * n1);
+                    Hm[3 + a][3 + b] = (X1[a][b] - Y1[a][b]) / (n1 * n1) - (gA[a] - gB1[a]) * t1[b] / (n1 * n1);
+                }
+            for (int a = 0; a < 8; a++)
+                for (int b = 0; b < 8; b++) {
+                    double hm = (a < 6 && b < 6) ? 0.5 * (Hm[a][b] + Hm[b][a]) : 0.0;
+                    H[a][b] += 2 * kt * (gm[a] * gm[b] + m * hm);
+                }
+        }
     }
     return E;
 }
@@ -355,12 +463,6 @@ static const int inc_v[NL][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 3}, {1, 4}, {2, 5},
                                  {3, 0}, {4, 0}, {5, 0}, {6, 0}, {7, 0}};
 static const double inc_c[NL][2] = {{-1, 0}, {-1, 0}, {-1, 0}, {1, -1}, {1, -1}, {1, -1},
                                     {1, 0},  {1, 0},  {1, 0},  {1, 0},  {1, 0}};
-
-static double hpacked(const double *h, int a, int b)
-{
-    if (a > b) { int t = a; a = b; b = t; }
-    return h[a * AD_NV - a * (a - 1) / 2 + (b - a)];
-}
 
 int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *grad, gal_csc *K)
 {
@@ -405,7 +507,6 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
     /* bending and torsion, per interior node */
     if (p->EI > 0 || p->torsion) {
         for (int i = 1; i <= nn - 2; i++) {
-            double th0 = p->torsion ? q[3 * nn + i - 1] : 0.0, th1 = p->torsion ? q[3 * nn + i] : 0.0;
             double c = 0;
             {
                 double e0[3], e1[3];
@@ -417,15 +518,15 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
             }
             if (!(c > -0.999))
                 return gal_error(GAL_EFAIL, "rod: the rod folds back on itself at node %d", i);
-            ad E = stencil_energy(rod, i, q, th0, th1);
-            U += E.v;
+            double Eg[8], EH[8][8];
+            U += stencil(rod, i, q, Eg, KK ? EH : NULL);
             int qi[NL];
             node_stencil_q(rod, i, qi);
             if (grad)
                 for (int a = 0; a < NL; a++) {
                     if (qi[a] < 0) continue;
                     double g = 0;
-                    for (int r = 0; r < inc_n[a]; r++) g += inc_c[a][r] * E.g[inc_v[a][r]];
+                    for (int r = 0; r < inc_n[a]; r++) g += inc_c[a][r] * Eg[inc_v[a][r]];
                     grad[qi[a]] += g;
                 }
             if (KK) {
@@ -437,7 +538,7 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
                         double h = 0;
                         for (int r = 0; r < inc_n[a]; r++)
                             for (int t = 0; t < inc_n[b]; t++)
-                                h += inc_c[a][r] * inc_c[b][t] * hpacked(E.h, inc_v[a][r], inc_v[b][t]);
+                                h += inc_c[a][r] * inc_c[b][t] * EH[inc_v[a][r]][inc_v[b][t]];
                         KK->val[sl] += h;
                     }
             }

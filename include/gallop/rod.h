@@ -87,4 +87,6 @@ gal_csc *gal_csc_free(gal_csc *A);
 /* y = A x for the symmetric matrix stored as its upper triangle. */
 void gal_csc_symv(const gal_csc *A, const double *x, double *y);
 
+/* Change the unstretched length (rest lengths and lumped masses follow); reference frames stay. */
+void gal_rod_set_unstretched_length(gal_rod *rod, double L0);
 #endif

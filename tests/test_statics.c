@@ -1,0 +1,97 @@
+/* test_statics.c: the elastic catenary, and the rod's equilibrium against it (H and sag within
+ * 0.1% for small EI), for every way of specifying a span, level and inclined. */
+#include "check.h"
+#include "gallop.h"
+#include "gallop/catenary.h"
+#include "gallop/statics.h"
+
+/* ACSR Drake-like conductor on a 300 m span */
+static gal_rod_params drake(double L, double h, int nel)
+{
+    gal_rod_params p = {.length = L, .height_difference = h, .elements = nel, .EA = 2.9e7 * 1.0,
+                        .EI = 20.0, .GJ = 150, .mass = 1.628, .polar_inertia = 1.6e-4,
+                        .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
+    return p;
+}
+
+/* The catenary closes on its supports and reproduces a given H, sag or L0 from the others. */
+static void test_catenary_roundtrip(void)
+{
+    gal_catenary c = {.L = 300, .h = 40, .w = 1.628 * 9.80665, .EA = 2.9e7};
+    CHECK(gal_catenary_solve(&c, 0, 28000) == GAL_OK, "%s", gal_error_message());
+    double x, z;
+    gal_catenary_point(&c, c.L0, &x, &z, NULL);
+    CHECK_NEAR(x, 300, 1e-9);
+    CHECK_NEAR(z, 40, 1e-9);
+    double sag = gal_catenary_sag(&c), L0 = c.L0;
+    gal_catenary c2 = {.L = 300, .h = 40, .w = 1.628 * 9.80665, .EA = 2.9e7};
+    CHECK(gal_catenary_solve(&c2, 1, sag) == GAL_OK, "%s", gal_error_message());
+    CHECK_REL(c2.H, 28000, 1e-9);
+    gal_catenary c3 = {.L = 300, .h = 40, .w = 1.628 * 9.80665, .EA = 2.9e7};
+    CHECK(gal_catenary_solve(&c3, 2, L0) == GAL_OK, "%s", gal_error_message());
+    CHECK_REL(c3.H, 28000, 1e-8);
+    /* shallow cable: sag close to the parabola w L^2 / (8 H) */
+    CHECK_REL(sag, 1.628 * 9.80665 * 300 * 300 / (8 * 28000) * sqrt(1 + (40.0 / 300) * (40.0 / 300)), 0.01);
+}
+
+static void check_equilibrium(double h, gal_statics_spec spec, double EI)
+{
+    gal_rod_params p = drake(300, h, 100);
+    p.EI = EI;
+    gal_catenary c = {.L = 300, .h = h, .w = p.mass * p.gravity, .EA = p.EA};
+    gal_catenary_solve(&c, 0, 28000);
+    double value = spec == GAL_BY_TENSION ? 28000 : spec == GAL_BY_SAG ? gal_catenary_sag(&c) : c.L0;
+    gal_equilibrium eq;
+    int st = gal_statics_solve(&p, spec, value, NULL, &eq);
+    CHECK(st == GAL_OK, "statics: %s", gal_error_message());
+    if (st) return;
+    printf("    (h %g, spec %d: H %.6g N, sag %.6g m vs catenary %.6g N, %.6g m; %d Newton, %d L0 "
+           "iterations, %.2f ms)\n", h, spec, eq.horizontal_tension, eq.sag, c.H, gal_catenary_sag(&c),
+           eq.newton_iterations, eq.length_iterations, 1e3 * eq.wall_time_s);
+    CHECK_REL(eq.horizontal_tension, c.H, 1e-3);
+    CHECK_REL(eq.sag, gal_catenary_sag(&c), 1e-3);
+    CHECK_REL(eq.unstretched_length, c.L0, 1e-6);
+    if (spec == GAL_BY_TENSION) CHECK_REL(eq.horizontal_tension, 28000, 1e-9);
+    if (spec == GAL_BY_SAG) CHECK_REL(eq.sag, value, 1e-8);
+    /* the equilibrium is planar and untwisted */
+    double ymax = 0;
+    for (int k = 0; k < eq.rod->nq; k++)
+        if (k >= 3 * eq.rod->nn || k % 3 == 1) ymax = fmax(ymax, fabs(eq.q[k]));
+    CHECK(ymax < 1e-9, "out-of-plane or twist %g", ymax);
+    gal_equilibrium_clear(&eq);
+}
+
+static void test_level_by_tension(void) { check_equilibrium(0, GAL_BY_TENSION, 20); }
+static void test_level_by_sag(void) { check_equilibrium(0, GAL_BY_SAG, 20); }
+static void test_level_by_length(void) { check_equilibrium(0, GAL_BY_LENGTH, 20); }
+static void test_inclined_by_tension(void) { check_equilibrium(60, GAL_BY_TENSION, 20); }
+static void test_inclined_by_sag(void) { check_equilibrium(60, GAL_BY_SAG, 20); }
+static void test_inclined_by_length(void) { check_equilibrium(-60, GAL_BY_LENGTH, 20); }
+static void test_cable_no_bending(void) { check_equilibrium(30, GAL_BY_TENSION, 0); }
+
+/* Without gravity the span is a straight line under the given tension. */
+static void test_no_gravity(void)
+{
+    gal_rod_params p = drake(100, 10, 20);
+    p.gravity = 0;
+    gal_equilibrium eq;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 5000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
+    CHECK_REL(eq.horizontal_tension, 5000, 1e-9);
+    CHECK_NEAR(eq.sag, 0, 1e-9);
+    gal_equilibrium_clear(&eq);
+    CHECK(gal_statics_solve(&p, GAL_BY_SAG, 1.0, NULL, &eq) == GAL_EINPUT, "sag without gravity");
+}
+
+int main(void)
+{
+    RUN(test_catenary_roundtrip);
+    RUN(test_level_by_tension);
+    RUN(test_level_by_sag);
+    RUN(test_level_by_length);
+    RUN(test_inclined_by_tension);
+    RUN(test_inclined_by_sag);
+    RUN(test_inclined_by_length);
+    RUN(test_cable_no_bending);
+    RUN(test_no_gravity);
+    return CHECK_SUMMARY();
+}
