@@ -236,10 +236,7 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
     for (int i = 0; i < nn; i++) {
         if (i > 0 && i < nn - 1)
             for (int k = 0; k < 3; k++) rod->free_q[nd] = 3 * i + k, rod->dof[3 * i + k] = nd++;
-        if (p->torsion && i < nel) {
-            int fixed = p->twist_clamped && (i == 0 || i == nel - 1);
-            if (!fixed) rod->free_q[nd] = 3 * nn + i, rod->dof[3 * nn + i] = nd++;
-        }
+        if (p->torsion && i < nel) rod->free_q[nd] = 3 * nn + i, rod->dof[3 * nn + i] = nd++;
     }
     rod->ndof = nd;
 
@@ -544,6 +541,18 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
             }
         }
     }
+
+    /* clamped twist at the supports: the end edges' frames against the clamps' (their reference
+     * frames, carried by the same minimal rotation), over the half edge between support and edge
+     * centre: U = GJ theta^2 / l0 at each end */
+    if (p->torsion && p->twist_clamped)
+        for (int e = 0; e < 2; e++) {
+            int j = e ? nel - 1 : 0, k = 3 * nn + j;
+            double kt = p->GJ / rod->l0[j], th = q[k];
+            U += kt * th * th;
+            if (grad) grad[k] += 2 * kt * th;
+            if (KK && rod->dof[k] >= 0) KK->val[KK->diag[rod->dof[k]]] += 2 * kt;
+        }
 
     /* gravity: U = sum m_i g z_i */
     if (p->gravity != 0)

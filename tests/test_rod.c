@@ -123,23 +123,27 @@ static void test_rigid_rotation_invariance(void)
     gsl_rng_free(r);
 }
 
-/* The twist energy of a straight rod twisted uniformly: GJ phi^2 / (2 L). */
+/* Twist energies of a straight rod: uniform twist with free ends, GJ phi^2 / (2 Lc) over the
+ * length Lc between the end edges' centres; a rigid rotation c held by clamps: 2 GJ c^2 / l0. */
 static void test_uniform_twist_energy(void)
 {
     int nel = 20;
     gal_rod_params p = {.length = 10, .elements = nel, .unstretched_length = 10, .EA = 1e6,
                         .EI = 0, .GJ = 250, .mass = 1, .polar_inertia = 1e-4, .torsion = 1,
-                        .twist_clamped = 1};
+                        .twist_clamped = 0};
     double *q = calloc(4 * nel + 3, sizeof(double));
     for (int i = 0; i <= nel; i++) q[3 * i] = 10.0 * i / nel;
     gal_rod *rod = gal_rod_alloc(&p, q);
-    double phi = 2.0; /* total twist, rad, between the centres of the end edges */
+    double phi = 2.0, U;
     for (int j = 0; j < nel; j++) q[3 * (nel + 1) + j] = phi * j / (nel - 1);
-    double U;
     gal_rod_eval(rod, q, &U, NULL, NULL);
-    /* the twist is spread over nel-1 interior nodes, lengths from end-edge centre to centre */
-    double Lt = 10.0 * (nel - 1) / nel;
-    CHECK_REL(U, p.GJ * phi * phi / (2 * Lt), 1e-12);
+    CHECK_REL(U, p.GJ * phi * phi / (2 * 10.0 * (nel - 1) / nel), 1e-12);
+    gal_rod_free(rod);
+    p.twist_clamped = 1;
+    rod = gal_rod_alloc(&p, q);
+    for (int j = 0; j < nel; j++) q[3 * (nel + 1) + j] = 0.3;
+    gal_rod_eval(rod, q, &U, NULL, NULL);
+    CHECK_REL(U, 2 * p.GJ * 0.3 * 0.3 / (10.0 / nel), 1e-12);
     free(q);
     gal_rod_free(rod);
 }

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <stddef.h>
 
+#define GAL_PI 3.14159265358979323846
+
 /* One status enum for the whole library: 0 success, negative failure. */
 typedef enum {
     GAL_OK = 0,

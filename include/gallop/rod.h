@@ -6,6 +6,7 @@
  *   U = sum_e EA/2 (|e|/l0 - 1)^2 l0                        extension (Eq. 5, EA (v3 - 1)^2)
  *     + sum_i EI |kb_i|^2 / lbar_i                          bending, isotropic (B1 = B2 = EI)
  *     + sum_i GJ (theta_i - theta_{i-1} + mref_i)^2 / lbar_i  torsion
+ *     + GJ (theta_0^2 / l0_0 + theta_{n-1}^2 / l0_{n-1})      clamped twist at the supports
  *     + sum_i m_i g z_i                                     gravity
  * with kb_i = 2 t_{i-1} x t_i / (1 + t_{i-1} . t_i), lbar_i = l0_{i-1} + l0_i and mref_i the
  * reference twist. The unloaded conductor is straight and untwisted (kbar = 0, twist bar = 0). */
@@ -26,7 +27,7 @@ typedef struct gal_rod_params {
     double polar_inertia;     /* kg m^2/m */
     double gravity;           /* m/s^2, 0 with gravity off */
     int torsion;              /* twist unknowns present */
-    int twist_clamped;        /* twist fixed at both ends (else free) */
+    int twist_clamped;        /* twist held by the clamps at both supports (else free) */
 } gal_rod_params;
 
 /* Compressed sparse column, upper triangle (row <= col), for the free degrees of freedom. */
