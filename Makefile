@@ -37,7 +37,7 @@ all: $(BUILD)/gallop $(BUILD)/libgallop.a
 
 # ---- Debian packages ----
 $(STAMP):
-	@sh tools/deps.sh $(DEB_PKGS)
+	@sh tests/deps.sh $(DEB_PKGS)
 	@mkdir -p build && touch $@
 deps: $(STAMP)
 
@@ -65,8 +65,8 @@ demo: $(BUILD)/gallop
 check: $(BUILD)/gallop $(TEST_BIN)
 	@GALLOP=$(abspath $(BUILD)/gallop) bash tests/run.sh $(TEST_BIN) $(TEST_SH)
 
-bench: $(BUILD)/gallop
-	@bash tools/bench.sh $(BUILD)/gallop
+bench: $(BUILD)/gallop $(BUILD)/libgallop.a
+	@bash tests/bench/run.sh $(BUILD)
 
 report: $(BUILD)/gallop
 	@bash notebooks-free-reports/make_report.sh $(BUILD)/gallop
