@@ -17,10 +17,12 @@ const char *gal_error_message(void) { return errbuf[0] ? errbuf : "unknown error
 
 int gal_error(int status, const char *fmt, ...)
 {
+    char tmp[sizeof errbuf]; /* the arguments may include the current message */
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(errbuf, sizeof errbuf, fmt, ap);
+    vsnprintf(tmp, sizeof tmp, fmt, ap);
     va_end(ap);
+    memcpy(errbuf, tmp, sizeof errbuf);
     return status;
 }
 
