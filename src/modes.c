@@ -89,6 +89,37 @@ static void classify(const gal_rod *rod, const double *q, const double *phi_free
     }
 }
 
+/* Within a cluster of (numerically) equal frequencies any orthonormal combination is a mode:
+ * choose the one that diagonalizes the horizontal kinetic energy, so that a straight span's
+ * coincident vertical and horizontal modes come out pure. */
+static void split_clusters(const gal_rod *rod, gal_modes *out, const double *mdiag, const double *lam)
+{
+    int n = out->ndof, nm = out->n;
+    for (int a = 0; a < nm;) {
+        int b = a + 1;
+        while (b < nm && fabs(lam[b] - lam[a]) <= 1e-7 * fabs(lam[a])) b++;
+        if (b - a == 2) { /* pairs are what occurs (a straight span); a Jacobi rotation */
+            double *p = out->shape + (size_t)a * n, *q = out->shape + (size_t)(a + 1) * n;
+            double hpp = 0, hqq = 0, hpq = 0;
+            for (int j = 0; j < n; j++) {
+                int k = rod->free_q[j];
+                if (k < 3 * rod->nn && k % 3 == 1) {
+                    hpp += mdiag[j] * p[j] * p[j];
+                    hqq += mdiag[j] * q[j] * q[j];
+                    hpq += mdiag[j] * p[j] * q[j];
+                }
+            }
+            double th = 0.5 * atan2(2 * hpq, hpp - hqq), c = cos(th), s = sin(th);
+            for (int j = 0; j < n; j++) {
+                double x = p[j], y = q[j];
+                p[j] = c * x + s * y;
+                q[j] = -s * x + c * y;
+            }
+        }
+        a = b;
+    }
+}
+
 typedef struct {
     const gal_csc *K;
     const double *mdiag;
@@ -207,6 +238,21 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
         double lam = d[ord[k]];
         md->omega = lam > 0 ? sqrt(lam) : 0;
         md->frequency_hz = md->omega / (2 * GAL_PI);
+    }
+    {
+        double *lam = malloc((size_t)nev * sizeof(double));
+        if (lam) {
+            for (int k = 0; k < nev; k++) lam[k] = out->mode[k].omega * out->mode[k].omega;
+            split_clusters(rod, out, mdiag, lam);
+            free(lam);
+        }
+    }
+    for (int k = 0; k < nev; k++) {
+        gal_mode *md = out->mode + k;
+        /* sign: largest entry positive */
+        double *dst = out->shape + (size_t)k * n, big = 0;
+        for (int j = 0; j < n; j++) if (fabs(dst[j]) > fabs(big)) big = dst[j];
+        if (big < 0) for (int j = 0; j < n; j++) dst[j] = -dst[j];
         classify(rod, q, dst, full, md);
         out->found[md->family]++;
     }

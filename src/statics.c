@@ -45,7 +45,21 @@ typedef struct {
     gal_chol *chol;
     double *g, *gt, *r, *d, *qt, *mdiag;
     double ftol;
+    const double *fext;   /* configuration-sized dead load, or NULL */
 } newton_ws;
+
+/* Total potential U(q) - fext . q and its gradient (the load is dead: it does not follow q). */
+static int eval_total(newton_ws *w, const double *q, double *U, double *g, gal_csc *K)
+{
+    int st = gal_rod_eval(w->rod, q, U, g, K);
+    if (st || !w->fext) return st;
+    for (int j = 0; j < w->rod->ndof; j++) {
+        int k = w->rod->free_q[j];
+        if (U) *U -= w->fext[k] * q[k];
+        if (g) g[k] -= w->fext[k];
+    }
+    return GAL_OK;
+}
 
 static double inf_norm_free(const gal_rod *rod, const double *g)
 {
@@ -60,7 +74,7 @@ static int newton(newton_ws *w, double *q, int max_iter, int *iters, double *res
     gal_rod *rod = w->rod;
     int n = rod->ndof, nq = rod->nq;
     double U;
-    int st = gal_rod_eval(rod, q, &U, w->g, rod->K);
+    int st = eval_total(w, q, &U, w->g, rod->K);
     if (st) return st;
     for (int it = 0; ; it++) {
         double rn = inf_norm_free(rod, w->g);
@@ -93,7 +107,7 @@ static int newton(newton_ws *w, double *q, int max_iter, int *iters, double *res
         for (int ls = 0; ls < 40; ls++, a *= 0.5) {
             memcpy(w->qt, q, (size_t)nq * sizeof(double));
             for (int j = 0; j < n; j++) w->qt[rod->free_q[j]] += a * w->d[j];
-            if (gal_rod_eval(rod, w->qt, &Ut, w->gt, NULL) != GAL_OK) continue;
+            if (eval_total(w, w->qt, &Ut, w->gt, NULL) != GAL_OK) continue;
             if (Ut <= U + 1e-4 * a * slope || inf_norm_free(rod, w->gt) < rn) {
                 accepted = 1;
                 break;
@@ -102,8 +116,28 @@ static int newton(newton_ws *w, double *q, int max_iter, int *iters, double *res
         if (!accepted)
             return gal_error(GAL_EFAIL, "statics: the line search failed at Newton iteration %d (residual %.3g N)", it, rn);
         memcpy(q, w->qt, (size_t)nq * sizeof(double));
-        if ((st = gal_rod_eval(rod, q, &U, w->g, rod->K))) return st;
+        if ((st = eval_total(w, q, &U, w->g, rod->K))) return st;
     }
+}
+
+int gal_statics_solve_loaded(gal_rod *rod, double *q, const double *fext, double force_tol, int max_newton,
+                            int *iterations)
+{
+    int n = rod->ndof, nq = rod->nq, st;
+    newton_ws w = {0};
+    w.rod = rod, w.fext = fext, w.ftol = force_tol;
+    w.chol = gal_chol_alloc(rod->K);
+    w.g = malloc((size_t)nq * sizeof(double)), w.gt = malloc((size_t)nq * sizeof(double));
+    w.qt = malloc((size_t)nq * sizeof(double)), w.r = malloc((size_t)n * sizeof(double));
+    w.d = malloc((size_t)n * sizeof(double)), w.mdiag = malloc((size_t)n * sizeof(double));
+    double res;
+    int it = 0;
+    if (!w.chol || !w.g || !w.gt || !w.qt || !w.r || !w.d || !w.mdiag) st = gal_error(GAL_ENOMEM, "statics: out of memory");
+    else st = newton(&w, q, max_newton, &it, &res);
+    if (iterations) *iterations += it;
+    gal_chol_free(w.chol);
+    free(w.g); free(w.gt); free(w.qt); free(w.r); free(w.d); free(w.mdiag);
+    return st;
 }
 
 int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double value,

@@ -1,0 +1,177 @@
+/* test_reduced.c: the reduced restoring force: Kirchhoff-Carrier cubic coefficients of a taut
+ * string, agreement with the full static response, and what the condensation of the stretching
+ * buys over a plain projection on the linear modes. */
+#include "check.h"
+#include "gallop.h"
+#include "gallop/modes.h"
+#include "gallop/reduced.h"
+#include "gallop/statics.h"
+
+/* A taut string: no gravity, no bending, no torsion. */
+static void test_kirchhoff_carrier(void)
+{
+    double L = 100, T0 = 1e4, m = 1.0, EA = 1e7;
+    gal_rod_params p = {.length = L, .elements = 100, .EA = EA, .EI = 0, .GJ = 1, .mass = m,
+                        .polar_inertia = 1e-4, .gravity = 0, .torsion = 0, .twist_clamped = 1};
+    gal_equilibrium eq;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, T0, NULL, &eq) == GAL_OK, "%s", gal_error_message());
+    gal_modes md;
+    int want[4] = {0, 3, 0, 0};
+    CHECK(gal_modes_find(eq.rod, eq.q, want, 50, &md) == GAL_OK, "%s", gal_error_message());
+    int sel[3], r = 0;
+    for (int k = 0; k < md.n && r < 3; k++)
+        if (md.mode[k].selected && md.mode[k].family == GAL_FAMILY_HORIZONTAL) sel[r++] = k;
+    CHECK(r == 3, "three horizontal modes");
+    gal_reduced_opts o;
+    gal_reduced_default_opts(&o);
+    o.amplitude_m = 0.5; /* the cubic (small-amplitude) coefficients: keep 5th-order terms small */
+    gal_reduced *rm = gal_reduced_build(eq.rod, eq.q, &md, sel, 3, NULL, 0, &o);
+    CHECK(rm != NULL, "%s", gal_error_message());
+    if (!rm) return;
+    /* f_i = c s^2 i^2 eta_i sum_j j^2 eta_j^2, c = EA pi^4 / (4 m L^4), s^2 = 2 / (m L) (the
+     * amplitude of sin(i pi x / L) per unit mass-normalized coordinate); the string's length
+     * between supports is L and its tension T0: use the stretched mass per length */
+    double Ls = L, ms = m * eq.unstretched_length / Ls;
+    double c = EA * pow(GAL_PI, 4) / (4 * ms * pow(Ls, 4)), s2 = 2 / (ms * Ls);
+    double worst = 0;
+    for (int mm = 0; mm < rm->n3; mm++) {
+        int j = rm->m3[3 * mm], k = rm->m3[3 * mm + 1], l = rm->m3[3 * mm + 2];
+        for (int i = 0; i < 3; i++) {
+            /* expected coefficient of eta_j eta_k eta_l in f_i */
+            double want_c = 0;
+            int ni = i + 1;
+            if (j == k && k == l && j == i) want_c = c * s2 * pow(ni, 4);
+            else if (j == k && l == i && j != i) want_c = c * s2 * ni * ni * pow(j + 1, 2);  /* eta_j^2 eta_i, j < i */
+            else if (k == l && j == i && k != i) want_c = c * s2 * ni * ni * pow(k + 1, 2);  /* eta_i eta_k^2, i < k */
+            double got = rm->A[i * rm->n3 + mm];
+            /* scale: the Kirchhoff-Carrier coefficients of the modes involved */
+            int hi = l + 1 > ni ? l + 1 : ni;
+            double ref = c * s2 * ni * ni * hi * hi;
+            if (want_c != 0) {
+                CHECK_REL(got, want_c, 1e-2);
+                worst = fmax(worst, fabs(got - want_c) / want_c);
+            } else {
+                CHECK(fabs(got) < 1e-2 * ref, "coefficient (%d; %d %d %d) = %g should vanish (scale %g)", i, j, k, l, got, ref);
+            }
+        }
+    }
+    double qmax = 0;
+    for (int mm = 0; mm < rm->n2 * 3; mm++) qmax = fmax(qmax, fabs(rm->B[mm]));
+    CHECK(qmax < 1e-3 * c * s2 * 1.0, "a straight string has no quadratic terms: %g", qmax);
+    /* the plain projection on the transverse modes (no axial relaxation) at the same amplitude:
+     * its cubic coefficient of mode 1 is about 3/2 of Kirchhoff-Carrier's (non-uniform stretching) */
+    double eta[3] = {rm->eta_ref[0], 0, 0}, f[3];
+    double *wq = malloc(eq.rod->nq * sizeof(double)), *wg = malloc(eq.rod->nq * sizeof(double));
+    gal_reduced_projected_force(rm, eq.rod, eq.q, eta, f, wq, wg);
+    double a_proj = (f[0] - rm->omega2[0] * eta[0]) / pow(eta[0], 3), a_kc = c * s2;
+    printf("    (worst relative error of the Kirchhoff-Carrier coefficients %.2e; %d load cases, "
+           "fit residual %.1e, %.3f s; projection's cubic coefficient %.3f x Kirchhoff-Carrier)\n",
+           worst, rm->load_cases, rm->fit_residual, rm->build_time_s, a_proj / a_kc);
+    CHECK(a_proj > 1.3 * a_kc, "the projection on linear modes should be too stiff: %g vs %g", a_proj, a_kc);
+    free(wq);
+    free(wg);
+    gal_reduced_free(rm);
+    gal_modes_clear(&md);
+    gal_equilibrium_clear(&eq);
+}
+
+/* A sagged span under a large static modal load (0.6 m at the largest entry by linear theory):
+ * the condensed model's response against the full static solution, and the plain projection. */
+static void test_condensation_matters(void)
+{
+    gal_rod_params p = {.length = 200, .elements = 80, .EA = 3e7, .EI = 20, .GJ = 150, .mass = 1.6,
+                        .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
+    gal_equilibrium eq;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
+    gal_modes md;
+    int want[4] = {2, 2, 1, 0};
+    CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
+    int sel[8], r = 0;
+    for (int k = 0; k < md.n; k++)
+        if (md.mode[k].selected) sel[r++] = k;
+    gal_reduced_opts o;
+    gal_reduced_default_opts(&o);
+    o.amplitude_m = 1.0;
+    gal_reduced *rm = gal_reduced_build(eq.rod, eq.q, &md, sel, r, NULL, 0, &o);
+    CHECK(rm != NULL, "%s", gal_error_message());
+    if (!rm) return;
+    for (int fam = 0; fam < 2; fam++) {
+    /* the first vertical / horizontal mode pushed to ~1.5 m by a dead modal load */
+    int ih = -1;
+    for (int i = 0; i < r; i++)
+        if (rm->family[i] == (gal_family)fam) { ih = i; break; }
+    int n = eq.rod->ndof, nq = eq.rod->nq;
+    double *mdiag = malloc(n * sizeof(double)), *fq = calloc(nq, sizeof(double)), *q = malloc(nq * sizeof(double));
+    gal_rod_mass_diag(eq.rod, mdiag);
+    double fmod = rm->omega2[ih] * 0.6 * rm->eta_ref[ih];
+    memcpy(q, eq.q, nq * sizeof(double));
+    for (int j = 0; j < n; j++) fq[eq.rod->free_q[j]] = mdiag[j] * rm->phi[(size_t)ih * n + j] * fmod;
+    int it = 0;
+    CHECK(gal_statics_solve_loaded(eq.rod, q, fq, 1e-6, 60, &it) == GAL_OK, "%s", gal_error_message());
+    double eta_full = 0;
+    for (int j = 0; j < n; j++) {
+        int k = eq.rod->free_q[j];
+        eta_full += rm->phi[(size_t)ih * n + j] * mdiag[j] * (q[k] - eq.q[k]);
+    }
+    /* reduced static responses: f(eta) = fmod e_ih by Newton in all r coordinates (a horizontal
+     * swing lifts the span: the vertical modes respond too), for both reduced models */
+    double *eta = calloc(r, sizeof(double)), *f = malloc(r * sizeof(double)), *fp = malloc(r * sizeof(double));
+    double *wq = malloc(nq * sizeof(double)), *wg = malloc(nq * sizeof(double));
+    double *J = malloc(r * r * sizeof(double)), res[2];
+    for (int model = 0; model < 2; model++) {
+        memset(eta, 0, r * sizeof(double));
+        eta[ih] = fmod / rm->omega2[ih];
+        for (int k = 0; k < 30; k++) {
+            if (model == 0) gal_reduced_force(rm, eta, f);
+            else gal_reduced_projected_force(rm, eq.rod, eq.q, eta, f, wq, wg);
+            f[ih] -= fmod;
+            for (int b = 0; b < r; b++) {
+                double h = 1e-6 * rm->eta_ref[b], save = eta[b];
+                eta[b] = save + h;
+                if (model == 0) gal_reduced_force(rm, eta, fp);
+                else gal_reduced_projected_force(rm, eq.rod, eq.q, eta, fp, wq, wg);
+                fp[ih] -= fmod;
+                eta[b] = save;
+                for (int a = 0; a < r; a++) J[a * r + b] = (fp[a] - f[a]) / h;
+            }
+            /* Gaussian elimination with partial pivoting, J dx = -f */
+            for (int c2 = 0; c2 < r; c2++) {
+                int pv = c2;
+                for (int a = c2 + 1; a < r; a++) if (fabs(J[a * r + c2]) > fabs(J[pv * r + c2])) pv = a;
+                for (int b = 0; b < r; b++) { double t = J[c2 * r + b]; J[c2 * r + b] = J[pv * r + b]; J[pv * r + b] = t; }
+                double t = f[c2]; f[c2] = f[pv]; f[pv] = t;
+                for (int a = c2 + 1; a < r; a++) {
+                    double fct = J[a * r + c2] / J[c2 * r + c2];
+                    for (int b = c2; b < r; b++) J[a * r + b] -= fct * J[c2 * r + b];
+                    f[a] -= fct * f[c2];
+                }
+            }
+            for (int a = r - 1; a >= 0; a--) {
+                double sacc = f[a];
+                for (int b = a + 1; b < r; b++) sacc -= J[a * r + b] * fp[b];
+                fp[a] = sacc / J[a * r + a];
+            }
+            for (int a = 0; a < r; a++) eta[a] -= fp[a];
+        }
+        res[model] = eta[ih];
+    }
+    double e_ic = res[0], e_pr = res[1];
+    double e_lin = fmod / rm->omega2[ih];
+    printf("    (%s, static modal response: full %.5g, condensed %.5g (%.2f%%), projected on linear modes "
+           "%.5g (%.1f%%), linear %.5g)\n", gal_family_names[fam], eta_full, e_ic, 100 * (e_ic - eta_full) / eta_full, e_pr,
+           100 * (e_pr - eta_full) / eta_full, e_lin);
+    CHECK_REL(e_ic, eta_full, 1e-2);
+    CHECK(fabs(e_pr - eta_full) > 2 * fabs(e_ic - eta_full), "the plain projection should be worse");
+    free(mdiag); free(fq); free(q); free(eta); free(f); free(fp); free(wq); free(wg); free(J);
+    }
+    gal_reduced_free(rm);
+    gal_modes_clear(&md);
+    gal_equilibrium_clear(&eq);
+}
+
+int main(void)
+{
+    RUN(test_kirchhoff_carrier);
+    RUN(test_condensation_matters);
+    return CHECK_SUMMARY();
+}
