@@ -21,6 +21,8 @@ static void cross3(const double *a, const double *b, double *r)
     r[0] = t0, r[1] = t1, r[2] = t2;
 }
 
+static void transport(const double *tb, const double *a, const double *t, double *r);
+
 /* ---- sparse pattern ---- */
 
 gal_csc *gal_csc_free(gal_csc *A)
@@ -281,6 +283,18 @@ void gal_rod_set_unstretched_length(gal_rod *rod, double L0)
         rod->node_mass[j + 1] += 0.5 * rod->p.mass * l0;
         rod->edge_inertia[j] = rod->p.polar_inertia * l0;
     }
+}
+
+void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3])
+{
+    double e[3], a[3];
+    for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
+    double le = norm3(e);
+    for (int k = 0; k < 3; k++) t[k] = e[k] / le;
+    transport(rod->tbar + 3 * j, rod->abar + 3 * j, t, a);
+    double th = rod->p.torsion ? q[3 * rod->nn + j] : 0.0, b[3];
+    cross3(t, a, b);
+    for (int k = 0; k < 3; k++) d1[k] = cos(th) * a[k] + sin(th) * b[k];
 }
 
 void gal_rod_gather(const gal_rod *rod, const double *full, double *free_part)

@@ -88,6 +88,10 @@ gal_csc *gal_csc_free(gal_csc *A);
 /* y = A x for the symmetric matrix stored as its upper triangle. */
 void gal_csc_symv(const gal_csc *A, const double *x, double *y);
 
+/* Unit tangent t and first material director d1 of edge j (the section's reference direction:
+ * the reference director carried to t by the minimal rotation, turned by the edge's twist). */
+void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3]);
+
 /* Change the unstretched length (rest lengths and lumped masses follow); reference frames stay. */
 void gal_rod_set_unstretched_length(gal_rod *rod, double L0);
 #endif
