@@ -4,4 +4,5 @@
 #define GALLOP_H
 #include "gallop/core.h"
 #include "gallop/aero.h"
+#include "gallop/wind.h"
 #endif
