@@ -128,9 +128,10 @@ def iced(path, title, cd, cl, cm, notes):
         r = math.radians(a)
         rows.append((a, fourier(cd, r), fourier(cl, r), fourier(cm, r)))
     write(path,
-          ["ILLUSTRATIVE, not measured: a smooth Fourier series chosen to have the features that "
-           "wind-tunnel tests of %s report (e.g. Chabart & Lilien 1998; Gjelstrup et al. 2012; "
-           "Lou et al. 2014; Ma et al. 2015); replace it with measured data for design work" % title],
+          ["ILLUSTRATIVE, not measured: a smooth Fourier series (below) with the qualitative "
+           "features of %s (C_D ~ 1-1.3, C_L of order +-1, small C_M, a negative Den Hartog range); "
+           "no numbers were taken from a publication. Replace it with wind-tunnel data (e.g. "
+           "Chabart & Lilien 1998, J. Wind Eng. Ind. Aerodyn.) for design work" % title],
           [fmt(cd, "C_D"), fmt(cl, "C_L"), fmt(cm, "C_M"),
            "tabulated every 5 deg; the spline through these nodes is what gallop uses"] + notes,
           rows)
