@@ -122,16 +122,16 @@ def fmt(terms, name):
     return name + " = " + " ".join(parts)
 
 
-def iced(path, title, cd, cl, cm, notes):
+def iced(path, title, features, cd, cl, cm, notes):
     rows = []
     for a in range(-180, 180, 5):
         r = math.radians(a)
         rows.append((a, fourier(cd, r), fourier(cl, r), fourier(cm, r)))
     write(path,
           ["ILLUSTRATIVE, not measured: a smooth Fourier series (below) with the qualitative "
-           "features of %s (C_D ~ 1-1.3, C_L of order +-1, small C_M, a negative Den Hartog range); "
+           "features of %s (%s); "
            "no numbers were taken from a publication. Replace it with wind-tunnel data (e.g. "
-           "Chabart & Lilien 1998, J. Wind Eng. Ind. Aerodyn.) for design work" % title],
+           "Chabart & Lilien 1998, J. Wind Eng. Ind. Aerodyn.) for design work" % (title, features)],
           [fmt(cd, "C_D"), fmt(cl, "C_L"), fmt(cm, "C_M"),
            "tabulated every 5 deg; the spline through these nodes is what gallop uses"] + notes,
           rows)
@@ -140,7 +140,8 @@ def iced(path, title, cd, cl, cm, notes):
 D_CD = [(1.15, 0, 0, "c"), (0.12, 2, 20, "c"), (-0.06, 1, 0, "c")]
 D_CL = [(-0.85, 2, 20, "s"), (-0.15, 1, 0, "s")]
 D_CM = [(-0.08, 2, 20, "s"), (0.03, 1, 0, "s")]
-iced("data/aero/iced_d_shape.csv", "D-shaped ice accretions on single conductors", D_CD, D_CL, D_CM,
+iced("data/aero/iced_d_shape.csv", "D-shaped ice accretions on single conductors",
+     "C_D ~ 1-1.3, C_L of order +-1, small C_M, a negative Den Hartog range", D_CD, D_CL, D_CM,
      ["d1 points from the conductor axis away from the ice (ice on the -d1 side, facing the wind",
       "  at alpha = 0); Den Hartog H < 0 for alpha in about [-5, 45] deg (minimum near 20 deg)",
       "  and, weaker, in about [-175, -150] deg (wind on the ice-free side)."])
@@ -149,6 +150,6 @@ C_CD = [(1.05, 0, 0, "c"), (0.06, 2, 15, "c")]
 C_CL = [(-0.35, 2, 15, "s"), (0.05, 1, 0, "s")]
 C_CM = [(-0.04, 2, 15, "s"), (-0.01, 1, 0, "s")]
 iced("data/aero/iced_crescent.csv", "thin crescent-shaped ice accretions on single conductors",
-     C_CD, C_CL, C_CM,
+     "C_D ~ 1-1.1, weaker lift than the D-shape, small C_M, Den Hartog stable", C_CD, C_CL, C_CM,
      ["d1 points from the conductor axis away from the ice (ice on the -d1 side);",
       "  Den Hartog H > 0 everywhere (thin ice: galloping, if any, through the torsional mechanism)."])
