@@ -23,7 +23,8 @@ def write(path, source, notes, rows):
             f.write("# %s\n" % s)
         f.write("alpha_deg,cd,cl,cm\n")
         for a, cd, cl, cm in rows:
-            f.write("%g,%.6f,%.6f,%.6f\n" % (a, cd, cl, cm))
+            line = "%g,%.6f,%.6f,%.6f" % (a, cd, cl, cm)
+            f.write(line.replace("-0.000000", "0.000000") + "\n")
 
 
 # ---- bare conductor: circular cylinder, subcritical Reynolds number ----
