@@ -3,4 +3,6 @@
 #ifndef GALLOP_H
 #define GALLOP_H
 #include "gallop/core.h"
+#include "gallop/aero.h"
+#include "gallop/wind.h"
 #endif
