@@ -2,7 +2,6 @@
  * dx = 3 m), median of 5 runs, for the set-up (gal_wind_alloc: FFTW plan, tables) and for
  * gal_wind_generate alone. Not part of `make check`. Build and run from the repository root:
  *   make bench (tests/bench/run.sh builds and runs it)
- *       -lgsl -lgslcblas -lfftw3 -lm -o build/bench_wind && ./build/bench_wind          */
 #define _POSIX_C_SOURCE 200809L
 #include "gallop.h"
 
