@@ -1,7 +1,7 @@
 /* bench_wind.c: time to generate 10 minutes of turbulence at 20 Hz on 100 points (Kaimal, C = 10,
  * dx = 3 m), median of 5 runs, for the set-up (gal_wind_alloc: FFTW plan, tables) and for
  * gal_wind_generate alone. Not part of `make check`. Build and run from the repository root:
- *   make bench (tests/bench/run.sh builds and runs it)
+ *   make bench (tests/bench/run.sh builds and runs it) */
 #define _POSIX_C_SOURCE 200809L
 #include "gallop.h"
 
