@@ -115,7 +115,8 @@ typedef struct {
     int given[K_COUNT];       /* 0 not given; > 0 its line; -1 from --set */
     char raw[K_COUNT][VALMAX];/* the value as given, for later messages */
     int fx[GAL_FX_COUNT];     /* -1 not given, 0 off, 1 on */
-    int set_spec;             /* a --set chose the equilibrium specification */
+    int seen[K_COUNT];        /* line of the key in the file (duplicates) */
+    int over[K_COUNT];        /* a --set gives this key: the file's value is not used */
     int status, err_line;     /* first error: status (0 none) and its line */
     char msg[2048];
     /* the reader */
@@ -266,12 +267,6 @@ static int apply(pstate *ps, int k, const char *v, int line)
     const char *kn = key_name(k);
     char sv[128], rt[160];
     show(v, sv, sizeof sv);
-
-    if (line < 0 && is_spec(k) && !ps->set_spec) {
-        /* a --set of one of tension / sag / unstretched length replaces the file's choice */
-        ps->given[K_TENSION] = ps->given[K_SAG] = ps->given[K_ULENGTH] = 0;
-        ps->set_spec = 1;
-    }
 
     switch (kd->type) {
     case T_NUM: {
@@ -428,10 +423,12 @@ static int handler(void *user, const char *section, const char *name, const char
     if (k < 0)
         return fail(ps, GAL_EINPUT, ps->line, "[%s] %s = %s: unknown key; allowed: %s", ss, sn,
                     sv, key_list(section, list, sizeof list));
-    if (ps->given[k] > 0)
+    if (ps->seen[k])
         return fail(ps, GAL_EINPUT, ps->line,
                     "[%s] %s = %s: duplicate key (first given at line %d); allowed: each key once",
-                    ss, sn, sv, ps->given[k]);
+                    ss, sn, sv, ps->seen[k]);
+    ps->seen[k] = ps->line;
+    if (ps->over[k]) return 1; /* replaced by a --set: not even checked */
     return apply(ps, k, value, ps->line);
 }
 
@@ -602,12 +599,13 @@ static int load_conductor(pstate *ps, const char *csv)
         double v[7];
         for (int i = 1; i < 7; i++) {
             int k = csv_keys[i];
-            if (!parse_num(f[i], &v[i]) || !in_range(&keys[k], v[i])) {
+            int isnum = parse_num(f[i], &v[i]);
+            if (!isnum || !in_range(&keys[k], v[i])) {
                 show(f[i], sf, sizeof sf);
                 free(buf);
                 ps->file = csv;
                 return fail(ps, GAL_EINPUT, line, "row %s: %s = %s: %s; allowed: %s", sn,
-                            csv_cols[i], sf, parse_num(f[i], &v[i]) ? "out of range" : "not a number",
+                            csv_cols[i], sf, isnum ? "out of range" : "not a number",
                             range_text(k, rt, sizeof rt));
             }
         }
@@ -802,6 +800,20 @@ static void defaults(gal_scene *sc)
     sc->simulation.probes[0] = 0.5;
 }
 
+/* The key a --set names, or -1 (apply_override then says what is wrong). */
+static int override_key(const char *o)
+{
+    char buf[256];
+    const char *eq = strchr(o, '=');
+    if (!eq || (size_t)(eq - o) >= sizeof buf) return -1;
+    memcpy(buf, o, (size_t)(eq - o));
+    buf[eq - o] = '\0';
+    char *dot = strchr(buf, '.');
+    if (!dot) return -1;
+    *dot = '\0';
+    return find_key(trim(buf), trim(dot + 1));
+}
+
 /* "section.key=value" from the command line */
 static int apply_override(pstate *ps, const char *o)
 {
@@ -870,6 +882,14 @@ int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides
     }
     ps->buf = buf;
     ps->len = len;
+    /* keys that a --set replaces; a --set of one of tension / sag / unstretched length replaces
+     * the file's choice of specification */
+    for (int i = 0; overrides && i < n; i++) {
+        int k = overrides[i] ? override_key(overrides[i]) : -1;
+        if (k < 0) continue;
+        ps->over[k] = 1;
+        if (is_spec(k)) ps->over[K_TENSION] = ps->over[K_SAG] = ps->over[K_ULENGTH] = 1;
+    }
     int r = ini_parse_stream(reader, ps, handler, ps);
     if (r == -2) fail(ps, GAL_ENOMEM, 0, "out of memory");
     else if (r > 0 && (!ps->status || r < ps->err_line)) {
