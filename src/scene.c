@@ -561,7 +561,8 @@ static int load_conductor(pstate *ps, const char *csv)
     }
     int line = 0, header = 0, found = 0;
     double row[7] = {0};
-    for (char *l = buf, *next; l; l = next) {
+    char *start = len >= 3 && !memcmp(buf, "\xEF\xBB\xBF", 3) ? buf + 3 : buf; /* UTF-8 BOM */
+    for (char *l = start, *next; l; l = next) {
         next = strchr(l, '\n');
         if (next) *next++ = '\0';
         line++;
@@ -620,7 +621,8 @@ static int load_conductor(pstate *ps, const char *csv)
             }
             found = line;
             memcpy(row, v, sizeof v);
-            if (strlen(f[0]) < sizeof sc->conductor.name) strcpy(sc->conductor.name, f[0]);
+            if (text_ok(f[0]) && strlen(f[0]) < sizeof sc->conductor.name)
+                strcpy(sc->conductor.name, f[0]); /* the table's spelling */
         }
     }
     free(buf);
