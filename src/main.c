@@ -12,6 +12,7 @@ static const struct {
     const char *usage;
 } commands[] = {
     {"version", gal_cli_version, "gallop version                         print the version"},
+    {"check", gal_cli_check, "gallop check SCENE [--set s.k=v ...]   parse and print the resolved scene"},
 };
 
 static void usage(FILE *fp)

@@ -45,7 +45,7 @@ typedef struct gal_scene {
         double axial_stiffness;   /* N (EA) */
         double bending_stiffness; /* N m^2 (EI, both axes) */
         double torsional_stiffness; /* N m^2/rad (GJ) */
-        double polar_inertia;     /* kg m^2/m (I_theta) */
+        double polar_inertia;     /* kg m^2/m (I_theta); default: the table row, else m d^2/8 */
         double damping_ratio;     /* -, modal, all modes */
     } conductor;
 
@@ -53,7 +53,8 @@ typedef struct gal_scene {
         int present;              /* an [ice] section with a mass was given */
         double mass_per_length;   /* kg/m */
         double eccentricity;      /* m, offset of the ice mass centre from the axis */
-        double polar_inertia;     /* kg m^2/m, about the conductor axis */
+        double polar_inertia;     /* kg m^2/m, about the conductor axis; default
+                                     mass_per_length (diameter^2/4 + eccentricity^2) */
         char aero_table[GAL_PATH_MAX]; /* CSV alpha_deg,cd,cl,cm, resolved path, or "" */
     } ice;
 
@@ -90,10 +91,17 @@ typedef struct gal_scene {
 extern const char *const gal_effect_names[GAL_FX_COUNT];
 
 /* Read and validate a scene. `overrides` holds `n` strings "section.key=value" applied after
- * the file (as if they were in it, reported as "--set"). `conductors_csv` is the table that
- * conductor.name refers to (NULL: data/conductors.csv beside the scene's data/ directory, or the
- * GALLOP_DATA environment variable). Returns GAL_OK, or GAL_EINPUT / GAL_EIO with a message that
- * names the file, line, key, value and the allowed range. */
+ * the file (as if they were in it, reported as "--set"): a key given by --set replaces the file's
+ * value, which is then not checked; a --set of one of horizontal_tension / sag /
+ * unstretched_length replaces the file's choice among them; a relative ice.aero_table given by
+ * --set is taken from the current directory (from the scene's directory in the file).
+ * `conductors_csv` is the table that conductor.name refers to (NULL: $GALLOP_DATA/conductors.csv
+ * if GALLOP_DATA is set, else data/conductors.csv if it exists in the current directory, else
+ * conductors.csv in the parent of the scene's directory, since scenes live in data/scenes/).
+ * The table is read only when conductor.name is given; the scene's conductor keys override its
+ * row. Returns GAL_OK, or GAL_EINPUT / GAL_EIO (unreadable file) with a message
+ * "FILE:LINE: [section] key = value: what is wrong; allowed: range" ("--set: ..." for overrides,
+ * "FILE: ..." for a missing key). The ranges are listed in src/scene.c (table `keys`). */
 int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides, int n,
                    const char *conductors_csv);
 
