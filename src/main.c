@@ -11,6 +11,8 @@ static const struct {
     gal_cli_fn fn;
     const char *usage;
 } commands[] = {
+    {"modes", gal_cli_modes, "gallop modes SCENE [-o DIR] [--set s.k=v ...]\n"
+              "                                         sagged equilibrium and natural modes"},
     {"version", gal_cli_version, "gallop version                         print the version"},
     {"check", gal_cli_check, "gallop check SCENE [--set s.k=v ...]   parse and print the resolved scene"},
 };

@@ -36,8 +36,8 @@ enum {
     K_IMASS, K_IECC, K_IPOLAR, K_ITABLE,
     K_SPEED, K_YAW, K_RHO, K_TURB, K_INTENS, K_COH, K_SEED,
     K_FX0, K_FXLAST = K_FX0 + GAL_FX_COUNT - 1,
-    K_ELEM, K_MVERT, K_MHOR, K_MTOR,
-    K_DUR, K_DT, K_PROBES,
+    K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW,
+    K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL,
     K_DIR, K_COUNT
 };
 
@@ -94,10 +94,21 @@ static const keydef keys[K_COUNT] = {
     INT("model", "modes_vertical", model.modes_vertical, 0, 200),
     INT("model", "modes_horizontal", model.modes_horizontal, 0, 200),
     INT("model", "modes_torsional", model.modes_torsional, 0, 200),
+    NUM("model", "identification_amplitude", model.identification_amplitude, 0, 0, 100, 0,
+        "m, largest translation of the reduced model's identification; 0 = max(1 m, sag)"),
+    {"model", "identification_twist", T_NUM, OFF(model.identification_twist), 0, 90, 1, 0, DEG,
+     "deg, largest twist of the reduced model's identification", NULL},
     NUM("simulation", "duration", simulation.duration, 0, 1, 1e6, 0, "s"),
     NUM("simulation", "time_step", simulation.time_step, 0, 0, 1000, 0, "s, 0 = chosen by gallop"),
     {"simulation", "probes", T_PROBES, 0, 0, 1, 1, 1, 1.0, "fractions of the span, comma list",
      NULL},
+    NUM("simulation", "wind_ramp", simulation.wind_ramp, 0, 0, 1e4, 0, "s, the mean wind rises from 0 over this time"),
+    NUM("simulation", "wind_reverse_time", simulation.wind_reverse_time, 0, 0, 1e6, 0,
+        "s, the wind reverses its direction at this time; 0 = never"),
+    NUM("simulation", "output_interval", simulation.output_interval, 0, 0, 10, 0, "s, trace sampling; 0 = chosen"),
+    NUM("simulation", "rho_inf", simulation.rho_inf, 0, 0, 1, 0,
+        "-, full model: spectral radius at infinite frequency (1 = no numerical dissipation)"),
+    NUM("simulation", "tolerance", simulation.tolerance, 0, 1, 0.1, 0, "-, reduced model: relative error per step"),
     {"output", "directory", T_DIR, 0, 0, 0, 0, 0, 1.0, "path", NULL},
 };
 
@@ -798,6 +809,13 @@ static void defaults(gal_scene *sc)
     sc->model.modes_torsional = 2;
     sc->simulation.duration = 60;
     sc->simulation.time_step = 0;
+    sc->simulation.wind_ramp = 10;
+    sc->simulation.wind_reverse_time = 0;
+    sc->simulation.output_interval = 0;
+    sc->simulation.rho_inf = 0.9;
+    sc->simulation.tolerance = 1e-7;
+    sc->model.identification_amplitude = 0;
+    sc->model.identification_twist = 30 * DEG;
     sc->simulation.nprobes = 1;
     sc->simulation.probes[0] = 0.5;
 }
@@ -931,10 +949,21 @@ static void put_num(FILE *fp, const char *key, double v, const char *unit)
     fprintf(fp, "%s = %s ; %s\n", key, fmt_num(v, b, sizeof b), unit);
 }
 
+/* A key in its file unit, with the digits that read back to the same SI value. */
 static void put_key(FILE *fp, const gal_scene *sc, int k)
 {
     const keydef *kd = &keys[k];
-    put_num(fp, kd->key, *(const double *)((const char *)sc + kd->off), kd->unit);
+    double v = *(const double *)((const char *)sc + kd->off);
+    if (kd->scale == 1.0) {
+        put_num(fp, kd->key, v, kd->unit);
+        return;
+    }
+    char b[40];
+    for (int p = 15; p <= 17; p++) {
+        snprintf(b, sizeof b, "%.*g", p, v / kd->scale);
+        if (strtod(b, NULL) * kd->scale == v) break;
+    }
+    fprintf(fp, "%s = %s ; %s\n", kd->key, b, kd->unit);
 }
 
 static const char *printable(const char *s, char *out, size_t n)
@@ -1003,6 +1032,8 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
     fprintf(fp, "modes_vertical = %d ; count\n", sc->model.modes_vertical);
     fprintf(fp, "modes_horizontal = %d ; count\n", sc->model.modes_horizontal);
     fprintf(fp, "modes_torsional = %d ; count\n", sc->model.modes_torsional);
+    put_key(fp, sc, K_IDAMP);
+    put_key(fp, sc, K_IDTW);
 
     fprintf(fp, "\n[simulation]\n");
     put_key(fp, sc, K_DUR);
@@ -1011,6 +1042,11 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
     for (int i = 0; i < sc->simulation.nprobes && i < GAL_MAX_PROBES; i++)
         fprintf(fp, "%s%s", i ? ", " : "", fmt_num(sc->simulation.probes[i], nb, sizeof nb));
     fprintf(fp, " ; %s\n", keys[K_PROBES].unit);
+    put_key(fp, sc, K_RAMP);
+    put_key(fp, sc, K_REVERSE);
+    put_key(fp, sc, K_OUTDT);
+    put_key(fp, sc, K_RHOINF);
+    put_key(fp, sc, K_TOL);
 
     fprintf(fp, "\n[output]\n");
     fprintf(fp, "; path\n");

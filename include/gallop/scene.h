@@ -73,6 +73,8 @@ typedef struct gal_scene {
     struct {
         int elements;             /* count, >= 4 */
         int modes_vertical, modes_horizontal, modes_torsional; /* count per family, >= 0 */
+        double identification_amplitude; /* m; 0 = max(1 m, sag) */
+        double identification_twist;     /* rad (scene: deg) */
     } model;
 
     struct {
@@ -80,6 +82,11 @@ typedef struct gal_scene {
         double time_step;         /* s; 0 = chosen by gallop */
         int nprobes;
         double probes[GAL_MAX_PROBES]; /* fractions of the span, in (0, 1) */
+        double wind_ramp;         /* s: the mean wind rises from 0 over this time */
+        double wind_reverse_time; /* s: the wind reverses at this time; 0 = never */
+        double output_interval;   /* s; 0 = chosen */
+        double rho_inf;           /* -, full model's numerical dissipation (1 = none) */
+        double tolerance;         /* -, reduced model's relative error per step */
     } simulation;
 
     struct {
