@@ -45,6 +45,16 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
     gal_loads_wind(L, t, x, w);
     if (L->aero_damping)
         for (int k = 0; k < 3; k++) w[k] -= rdot[k];
+    if (L->attack_angle != 0) {
+        /* the section's reference direction turned by -attack_angle about the tangent: the
+         * angle of attack, measured from it, grows by attack_angle */
+        double c = cos(L->attack_angle), s = sin(L->attack_angle), b[3], d[3];
+        b[0] = tan[1] * d1[2] - tan[2] * d1[1];
+        b[1] = tan[2] * d1[0] - tan[0] * d1[2];
+        b[2] = tan[0] * d1[1] - tan[1] * d1[0];
+        for (int k = 0; k < 3; k++) d[k] = c * d1[k] - s * b[k];
+        return gal_aero_load(L->table, tan, d, w, L->rho, L->diam, L->flags, f, m);
+    }
     return gal_aero_load(L->table, tan, d1, w, L->rho, L->diam, L->flags, f, m);
 }
 

@@ -33,7 +33,7 @@ enum { T_NUM, T_INT, T_LONG, T_ENUM, T_NAME, T_PATH, T_DIR, T_FX, T_PROBES };
 enum {
     K_LENGTH, K_HDIFF, K_TENSION, K_SAG, K_ULENGTH, K_TWIST,
     K_CNAME, K_DIAM, K_MASS, K_EA, K_EI, K_GJ, K_CPOLAR, K_ZETA,
-    K_IMASS, K_IECC, K_IPOLAR, K_ITABLE,
+    K_IMASS, K_IECC, K_IPOLAR, K_ITABLE, K_IANGLE,
     K_SPEED, K_YAW, K_RHO, K_TURB, K_INTENS, K_COH, K_SEED,
     K_FX0, K_FXLAST = K_FX0 + GAL_FX_COUNT - 1,
     K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW,
@@ -81,6 +81,8 @@ static const keydef keys[K_COUNT] = {
     NUM("ice", "eccentricity", ice.eccentricity, -0.5, 0, 0.5, 0, "m"),
     NUM("ice", "polar_inertia", ice.polar_inertia, 0, 0, 10, 0, "kg m^2/m"),
     {"ice", "aero_table", T_PATH, 0, 0, 0, 0, 0, 1.0, "CSV alpha_deg,cd,cl,cm", NULL},
+    {"ice", "attack_angle", T_NUM, OFF(ice.attack_angle), -180, 180, 0, 0, DEG,
+     "deg, angle of attack of a horizontal wind normal to the span on the section at rest", NULL},
     NUM("wind", "speed", wind.speed, 0, 0, 80, 0, "m/s"),
     {"wind", "yaw", T_NUM, OFF(wind.yaw), 0, 180, 0, 0, DEG, "deg, 90 = normal to the span", NULL},
     NUM("wind", "air_density", wind.air_density, 0, 1, 5, 0, "kg/m^3"),
@@ -760,7 +762,7 @@ static int finish(pstate *ps, const char *csv_given)
             sc->conductor.mass_per_length * sc->conductor.diameter * sc->conductor.diameter / 8;
     sc->ice.present = ps->given[K_IMASS] != 0;
     if (!sc->ice.present) {
-        for (int k = K_IECC; k <= K_ITABLE; k++)
+        for (int k = K_IECC; k <= K_IANGLE; k++)
             if (ps->given[k])
                 return KFAIL(k, "ice without a mass; allowed: together with [ice] "
                              "mass_per_length%s", "");
@@ -1004,6 +1006,7 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
             fprintf(fp, "; CSV alpha_deg,cd,cl,cm\n");
             fprintf(fp, "aero_table = %s\n", sc->ice.aero_table);
         }
+        put_key(fp, sc, K_IANGLE);
     } else {
         fprintf(fp, "; no ice\n");
     }

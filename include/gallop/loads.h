@@ -18,6 +18,7 @@ typedef struct gal_loads {
     int aero_damping;        /* the conductor's velocity is in the relative wind */
     double rho;              /* kg/m^3 */
     double diam;             /* m */
+    double attack_angle;     /* rad: added to the angle of attack (the section's orientation at rest) */
     double speed;            /* m/s, mean */
     double dir[3];           /* unit wind direction (horizontal; yaw from the span axis) */
     double ramp_time;        /* s: mean wind from 0 to speed by (1 - cos)/2 over this time */

@@ -56,6 +56,8 @@ typedef struct gal_scene {
         double polar_inertia;     /* kg m^2/m, about the conductor axis; default
                                      mass_per_length (diameter^2/4 + eccentricity^2) */
         char aero_table[GAL_PATH_MAX]; /* CSV alpha_deg,cd,cl,cm, resolved path, or "" */
+        double attack_angle;      /* rad (scene: deg): the section's angle of attack at rest for a
+                                   * horizontal wind normal to the span (orientation of the ice) */
     } ice;
 
     struct {
