@@ -3,4 +3,5 @@
 #ifndef GALLOP_H
 #define GALLOP_H
 #include "gallop/core.h"
+#include "gallop/spectrum.h"
 #endif

@@ -1,0 +1,153 @@
+/* hilbert.c: envelope of a record as the modulus of its analytic signal (FFT-based Hilbert
+ * transform: Z_k = 2 X_k for positive, 0 for negative frequencies, Marple 1999), with the record
+ * continued by reflection about a crest near each end as the edge guard, and the time to steady galloping from the envelope. */
+#include "gallop/core.h"
+#include "gallop/spectrum.h"
+
+#include <fftw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct gal_hilbert {
+    size_t n, pad, m;     /* record, reflection at each end, transform length m = n + 2 pad */
+    double *ext;          /* the extended centred record, m */
+    fftw_complex *z;      /* its spectrum, then the analytic signal, m */
+    fftw_plan fwd, bwd;
+};
+
+gal_hilbert *gal_spectrum_hilbert_alloc(size_t n)
+{
+    if (n < GAL_TRACE_MIN_SAMPLES) {
+        gal_error(GAL_EINPUT, "envelope of %zu samples: at least %d needed", n,
+                  GAL_TRACE_MIN_SAMPLES);
+        return NULL;
+    }
+    gal_hilbert *h = calloc(1, sizeof *h);
+    if (!h) return gal_error(GAL_ENOMEM, "out of memory"), NULL;
+    h->n = n;
+    h->pad = n / 4;
+    h->m = n + 2 * h->pad;
+    h->ext = fftw_malloc(h->m * sizeof *h->ext);
+    h->z = fftw_malloc(h->m * sizeof *h->z);
+    if (!h->ext || !h->z) {
+        gal_error(GAL_ENOMEM, "out of memory for the envelope of %zu samples", n);
+        return gal_spectrum_hilbert_free(h);
+    }
+    h->fwd = fftw_plan_dft_r2c_1d((int)h->m, h->ext, h->z, FFTW_ESTIMATE);
+    h->bwd = fftw_plan_dft_1d((int)h->m, h->z, h->z, FFTW_BACKWARD, FFTW_ESTIMATE);
+    if (!h->fwd || !h->bwd) {
+        gal_error(GAL_EFAIL, "FFTW could not plan a transform of %zu samples", h->m);
+        return gal_spectrum_hilbert_free(h);
+    }
+    return h;
+}
+
+gal_hilbert *gal_spectrum_hilbert_free(gal_hilbert *h)
+{
+    if (!h) return NULL;
+    if (h->fwd) fftw_destroy_plan(h->fwd);
+    if (h->bwd) fftw_destroy_plan(h->bwd);
+    fftw_free(h->ext);
+    fftw_free(h->z);
+    free(h);
+    return NULL;
+}
+
+/* Edge guard: the record is continued past each end by reflection about a centre c (in half
+ * samples) near that end, x(r) = x(2c - r), the centre chosen among the last (first) n/8 samples
+ * so that the continuation best matches the quadratic extrapolation of the record. For an
+ * oscillation the centre lands on a crest, where reflection continues the sine smoothly (a
+ * reflection about the end sample itself leaves a kink whose Hilbert transform decays only like
+ * 1/distance). Returns 2c. */
+static size_t reflect_end(const double *x, size_t n, size_t w)
+{
+    double p1 = 3 * x[n - 1] - 3 * x[n - 2] + x[n - 3];   /* predicted x(n) */
+    size_t best = 2 * (n - 1);
+    double ebest = INFINITY;
+    for (size_t c2 = 2 * (n - 1); c2 + 2 * w >= 2 * (n - 1); c2--) {
+        double e1 = x[c2 - n], e2 = x[c2 - n - 1];          /* continuation x(n), x(n+1) */
+        double p2 = 3 * e1 - 3 * x[n - 1] + x[n - 2];
+        double err = fabs(e1 - p1) + fabs(e2 - p2);
+        if (err < ebest) ebest = err, best = c2;
+    }
+    return best;
+}
+
+static size_t reflect_start(const double *x, size_t w)
+{
+    double p1 = 3 * x[0] - 3 * x[1] + x[2];               /* predicted x(-1) */
+    size_t best = 0;
+    double ebest = INFINITY;
+    for (size_t c2 = 0; c2 <= 2 * w; c2++) {
+        double e1 = x[c2 + 1], e2 = x[c2 + 2];              /* continuation x(-1), x(-2) */
+        double p2 = 3 * e1 - 3 * x[0] + x[1];
+        double err = fabs(e1 - p1) + fabs(e2 - p2);
+        if (err < ebest) ebest = err, best = c2;
+    }
+    return best;
+}
+
+int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env)
+{
+    size_t n = h->n, p = h->pad, m = h->m, w = n / 8;
+    double mean = 0;
+    for (size_t j = 0; j < n; j++) {
+        if (!isfinite(x[j])) return gal_error(GAL_EINPUT, "envelope: sample %zu is not finite", j);
+        mean += x[j];
+    }
+    mean /= (double)n;
+    double dev = 0;
+    for (size_t j = 0; j < n; j++) dev = fmax(dev, fabs(x[j] - mean));
+    if (dev <= 1e-13 * (fabs(mean) + 1e-300)) {           /* constant record: no oscillation */
+        for (size_t j = 0; j < n; j++) env[j] = 0;
+        return GAL_OK;
+    }
+    size_t cs = reflect_start(x, w), ce = reflect_end(x, n, w);   /* 2 p + 2 w < n: in range */
+    for (size_t j = 0; j < n; j++) h->ext[p + j] = x[j] - mean;
+    for (size_t j = 1; j <= p; j++) {
+        h->ext[p - j] = x[cs + j] - mean;                 /* x(-j) = x(2c - (-j)) */
+        h->ext[p + n - 1 + j] = x[ce - (n - 1 + j)] - mean;
+    }
+    fftw_execute(h->fwd);                                 /* z[0..m/2] = X_k */
+    /* positive frequencies 1..(m-1)/2 doubled; DC and (m even) Nyquist kept; negative ones 0 */
+    for (size_t k = 1; k < (m + 1) / 2; k++) h->z[k][0] *= 2, h->z[k][1] *= 2;
+    for (size_t k = m / 2 + 1; k < m; k++) h->z[k][0] = h->z[k][1] = 0;
+    fftw_execute(h->bwd);                                 /* z_j = m * analytic signal */
+    for (size_t j = 0; j < n; j++) env[j] = hypot(h->z[p + j][0], h->z[p + j][1]) / (double)m;
+    return GAL_OK;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int gal_spectrum_steady_time(const double *env, size_t n, double dt, double tol, double *t_steady,
+                             double *level)
+{
+    *t_steady = NAN;
+    if (level) *level = NAN;
+    if (n < GAL_TRACE_MIN_SAMPLES)
+        return gal_error(GAL_EINPUT, "time to steady: %zu samples, at least %d needed", n,
+                         GAL_TRACE_MIN_SAMPLES);
+    size_t nl = n / 5 > 0 ? n / 5 : 1;                    /* the last 20% */
+    double *tail = malloc(nl * sizeof *tail);
+    if (!tail) return gal_error(GAL_ENOMEM, "out of memory");
+    memcpy(tail, env + n - nl, nl * sizeof *tail);
+    qsort(tail, nl, sizeof *tail, cmp_double);
+    double L = nl % 2 ? tail[nl / 2] : 0.5 * (tail[nl / 2 - 1] + tail[nl / 2]);
+    free(tail);
+    if (level) *level = L;
+    if (!(L > 0) || !isfinite(L)) return GAL_OK;          /* constant record: no steady level */
+    size_t guard = n / 50, end = n - guard;               /* the last 2% are not judged */
+    size_t first = 0;                                     /* first sample of the final run */
+    for (size_t j = end; j-- > 0;)
+        if (fabs(env[j] - L) > tol * L) {
+            first = j + 1;
+            break;
+        }
+    *t_steady = (double)first * dt;
+    return GAL_OK;
+}
