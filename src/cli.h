@@ -7,5 +7,6 @@ typedef int (*gal_cli_fn)(int argc, char **argv);
 
 /* One entry per sub-command, in src/cli_<name>.c. */
 int gal_cli_version(int argc, char **argv);
+int gal_cli_spectrum(int argc, char **argv);
 
 #endif

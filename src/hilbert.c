@@ -1,6 +1,7 @@
 /* hilbert.c: envelope of a record as the modulus of its analytic signal (FFT-based Hilbert
  * transform: Z_k = 2 X_k for positive, 0 for negative frequencies, Marple 1999), with the record
- * continued by reflection about a crest near each end as the edge guard, and the time to steady galloping from the envelope. */
+ * continued by reflection about a crest near each end as the edge guard, and the time to steady
+ * galloping from the envelope. */
 #include "gallop/core.h"
 #include "gallop/spectrum.h"
 
@@ -54,38 +55,49 @@ gal_hilbert *gal_spectrum_hilbert_free(gal_hilbert *h)
     return NULL;
 }
 
-/* Edge guard: the record is continued past each end by reflection about a centre c (in half
- * samples) near that end, x(r) = x(2c - r), the centre chosen among the last (first) n/8 samples
- * so that the continuation best matches the quadratic extrapolation of the record. For an
- * oscillation the centre lands on a crest, where reflection continues the sine smoothly (a
- * reflection about the end sample itself leaves a kink whose Hilbert transform decays only like
- * 1/distance). Returns 2c. */
-static size_t reflect_end(const double *x, size_t n, size_t w)
+/* ---- edge guard ----
+ * The record is continued past each end by reflection about a centre c near that end,
+ * x(r) = x(2c - r). For an oscillation the best centre is a crest or a trough, about which it is
+ * symmetric: there the reflection continues it smoothly, while reflection about the end sample
+ * leaves a kink whose Hilbert transform decays only like 1/distance. The centre minimises the
+ * relative asymmetry of the record over L samples on either side (a grid of half samples, then
+ * a parabola for the fraction), and the continuation is interpolated (cubic Lagrange). */
+
+/* Relative asymmetry of x about c = c2/2 over L pairs (x(c+s), x(c-s)). */
+static double asymmetry(const double *x, size_t c2, size_t L, double mean)
 {
-    double p1 = 3 * x[n - 1] - 3 * x[n - 2] + x[n - 3];   /* predicted x(n) */
-    size_t best = 2 * (n - 1);
-    double ebest = INFINITY;
-    for (size_t c2 = 2 * (n - 1); c2 + 2 * w >= 2 * (n - 1); c2--) {
-        double e1 = x[c2 - n], e2 = x[c2 - n - 1];          /* continuation x(n), x(n+1) */
-        double p2 = 3 * e1 - 3 * x[n - 1] + x[n - 2];
-        double err = fabs(e1 - p1) + fabs(e2 - p2);
-        if (err < ebest) ebest = err, best = c2;
+    double num = 0, den = 0;
+    for (size_t i = c2 / 2 + 1; i <= c2 / 2 + L; i++) {
+        double a = x[i] - mean, b = x[c2 - i] - mean;
+        num += (a - b) * (a - b);
+        den += a * a + b * b;
     }
-    return best;
+    return den > 0 ? num / den : 0;
 }
 
-static size_t reflect_start(const double *x, size_t w)
+/* Twice the best centre, c2 in [lo, hi] (half samples), refined to a fraction. */
+static double best_centre(const double *x, size_t lo, size_t hi, size_t L, double mean)
 {
-    double p1 = 3 * x[0] - 3 * x[1] + x[2];               /* predicted x(-1) */
-    size_t best = 0;
-    double ebest = INFINITY;
-    for (size_t c2 = 0; c2 <= 2 * w; c2++) {
-        double e1 = x[c2 + 1], e2 = x[c2 + 2];              /* continuation x(-1), x(-2) */
-        double p2 = 3 * e1 - 3 * x[0] + x[1];
-        double err = fabs(e1 - p1) + fabs(e2 - p2);
-        if (err < ebest) ebest = err, best = c2;
+    size_t best = hi;
+    double eb = INFINITY;
+    for (size_t c2 = lo; c2 <= hi; c2++) {
+        double e = asymmetry(x, c2, L, mean);
+        if (e < eb) eb = e, best = c2;
     }
-    return best;
+    if (best == lo || best == hi) return (double)best;
+    double em = asymmetry(x, best - 1, L, mean), ep = asymmetry(x, best + 1, L, mean);
+    double curv = em - 2 * eb + ep, d = curv > 0 ? 0.5 * (em - ep) / curv : 0;
+    return (double)best + (d < -1 ? -1 : d > 1 ? 1 : d);   /* vertex of the parabola */
+}
+
+/* x at a fractional index u, 1 <= u <= n - 3 (cubic Lagrange through 4 samples). */
+static double interp(const double *x, double u)
+{
+    size_t k = (size_t)floor(u);
+    double t = u - (double)k;
+    const double *q = x + k - 1;
+    return q[0] * (-t * (t - 1) * (t - 2) / 6) + q[1] * ((t + 1) * (t - 1) * (t - 2) / 2)
+         + q[2] * (-(t + 1) * t * (t - 2) / 2) + q[3] * ((t + 1) * t * (t - 1) / 6);
 }
 
 int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env)
@@ -103,11 +115,15 @@ int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env)
         for (size_t j = 0; j < n; j++) env[j] = 0;
         return GAL_OK;
     }
-    size_t cs = reflect_start(x, w), ce = reflect_end(x, n, w);   /* 2 p + 2 w < n: in range */
+    /* centres within w = n/8 of each end, symmetric over L samples; with the pad p = n/4 every
+     * reflected index stays inside [1, n - 3] */
+    size_t L = n / 16 < 64 ? n / 16 : 64;
+    double cs = best_centre(x, 2 * L, 2 * w, L, mean);
+    double ce = best_centre(x, 2 * (n - 1 - w), 2 * (n - 1 - L), L, mean);
     for (size_t j = 0; j < n; j++) h->ext[p + j] = x[j] - mean;
     for (size_t j = 1; j <= p; j++) {
-        h->ext[p - j] = x[cs + j] - mean;                 /* x(-j) = x(2c - (-j)) */
-        h->ext[p + n - 1 + j] = x[ce - (n - 1 + j)] - mean;
+        h->ext[p - j] = interp(x, cs + (double)j) - mean;                   /* x(-j) */
+        h->ext[p + n - 1 + j] = interp(x, ce - (double)(n - 1 + j)) - mean; /* x(n-1+j) */
     }
     fftw_execute(h->fwd);                                 /* z[0..m/2] = X_k */
     /* positive frequencies 1..(m-1)/2 doubled; DC and (m even) Nyquist kept; negative ones 0 */

@@ -12,6 +12,8 @@ static const struct {
     const char *usage;
 } commands[] = {
     {"version", gal_cli_version, "gallop version                         print the version"},
+    {"spectrum", gal_cli_spectrum, "gallop spectrum TRACE.csv [--column NAME]... [--pair Y,Z]... [--from T] [--segment N] [-o DIR]\n"
+                                   "                                         spectral analysis of any trace (DIR: TRACE's directory/spectrum)"},
 };
 
 static void usage(FILE *fp)

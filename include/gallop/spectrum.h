@@ -133,10 +133,11 @@ gal_hilbert *gal_spectrum_hilbert_free(gal_hilbert *h);
 
 /* env[j] = |x_j - mean + i H[x - mean]_j|, the modulus of the analytic signal (FFT-based
  * Hilbert transform); all zeros for a constant record. Edge guard: before the transform the
- * record is continued by n/4 samples past each end by reflection about a point within n/8
- * samples of that end, chosen so that the continuation best matches the quadratic extrapolation
- * of the record (for an oscillation: a crest, where reflection continues it smoothly; reflecting
- * about the end sample would leave a kink whose error decays only like 1/distance). */
+ * record is continued by n/4 samples past each end by reflection, x(r) = x(2c - r), about the
+ * centre c within n/8 samples of that end about which the record is most symmetric (over
+ * min(n/16, 64) samples; for an oscillation: a crest or trough, found to a fraction of a sample),
+ * so that an oscillation continues smoothly (a steady sine: envelope error ~1e-8 at the ends).
+ * Reflecting about the end sample itself would leave a kink whose error decays like 1/distance. */
 int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env);
 
 /* Time to steady: final level L = median of env over the last 20% of the record; the result
