@@ -295,6 +295,7 @@ static int analyse(const options *o, const gal_trace *tr, const int *sel, size_t
         ri.auto_from = isnan(o->from);
         if (ri.auto_from) {
             ri.i0 = any ? iauto : imid;
+            if (n - ri.i0 < GAL_TRACE_MIN_SAMPLES) ri.i0 = n - GAL_TRACE_MIN_SAMPLES;
         } else {
             double r = (o->from - tr->t[0]) / dt;
             if (r < -1e-6 || o->from > tr->t[n - 1])

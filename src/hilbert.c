@@ -106,9 +106,8 @@ int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env)
     double mean = 0;
     for (size_t j = 0; j < n; j++) {
         if (!isfinite(x[j])) return gal_error(GAL_EINPUT, "envelope: sample %zu is not finite", j);
-        mean += x[j];
+        mean += (x[j] - mean) / (double)(j + 1);   /* running mean: no overflow */
     }
-    mean /= (double)n;
     double dev = 0;
     for (size_t j = 0; j < n; j++) dev = fmax(dev, fabs(x[j] - mean));
     if (dev <= 1e-13 * (fabs(mean) + 1e-300)) {           /* constant record: no oscillation */

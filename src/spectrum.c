@@ -149,8 +149,7 @@ int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double 
 {
     if (n < 2 || !(dt > 0)) return gal_error(GAL_EINPUT, "refine: %zu samples, dt %g s", n, dt);
     double mean = 0;
-    for (size_t j = 0; j < n; j++) mean += x[j];
-    mean /= (double)n;
+    for (size_t j = 0; j < n; j++) mean += (x[j] - mean) / (double)(j + 1);   /* running mean */
     double fnyq = 0.5 / dt, h = 0.5 / ((double)n * dt);   /* grid: half a record bin */
     double lo = f0 - halfwidth, hi = f0 + halfwidth;
     if (lo < 0) lo = 0;
@@ -236,11 +235,10 @@ int gal_spectrum_measure(gal_welch *w, const double *x, size_t n, double dt, siz
     double mean = 0, lo = x[0], hi = x[0], ss = 0;
     for (size_t j = 0; j < n; j++) {
         if (!isfinite(x[j])) return gal_error(GAL_EINPUT, "sample %zu is not finite", j);
-        mean += x[j];
+        mean += (x[j] - mean) / (double)(j + 1);   /* running mean: no overflow */
         if (x[j] < lo) lo = x[j];
         if (x[j] > hi) hi = x[j];
     }
-    mean /= (double)n;
     for (size_t j = 0; j < n; j++) ss += (x[j] - mean) * (x[j] - mean);   /* two-pass variance */
     m->mean = mean;
     m->rms = sqrt(ss / (double)n);

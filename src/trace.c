@@ -246,7 +246,8 @@ int gal_trace_read(const char *path, gal_trace **trace)
     size_t lineno = 0;
     int st = GAL_OK;
     char *s = next_line(&r, &lineno);
-    if (!s) st = gal_error(GAL_EINPUT, "%s: no header line (the file has no data)", path);
+    if (!s && ferror(r.fp)) st = gal_error(GAL_EIO, "%s: cannot read: %s", path, strerror(errno));
+    else if (!s) st = gal_error(GAL_EINPUT, "%s: no header line (the file has no data)", path);
     if (!st) st = read_header(&r, s, lineno);
     while (!st && (s = next_line(&r, &lineno))) st = read_row(&r, s, lineno);
     if (!st && ferror(r.fp)) st = gal_error(GAL_EIO, "%s: read error", path);
