@@ -279,7 +279,7 @@ static int analyse(const options *o, const gal_trace *tr, const int *sel, size_t
     int any = 0;
     for (size_t c = 0; !st && c < nsel; c++) {
         double ts;
-        st = gal_spectrum_envelope(h, tr->x[sel[c]], env);
+        st = gal_spectrum_envelope(h, tr->x[sel[c]], GAL_SPECTRUM_ENVELOPE_BAND, env);
         if (!st) st = gal_spectrum_steady_time(env, n, dt, 0.05, &ts, NULL);
         if (st) break;
         tss[c] = tr->t[0] + ts;
@@ -314,6 +314,9 @@ static int analyse(const options *o, const gal_trace *tr, const int *sel, size_t
         if (ri.nseg > ns)
             st = gal_error(GAL_EINPUT, "--segment %zu is longer than the steady part (%zu samples)",
                            ri.nseg, ns);
+        else if (ri.nseg * 200 < ns)
+            fprintf(stderr, "gallop spectrum: warning: --segment %zu is below 1/200 of the steady "
+                    "part (%zu samples): peak frequencies are coarse\n", ri.nseg, ns);
     }
     if (!st) {
         w = gal_spectrum_welch_alloc(ri.nseg);

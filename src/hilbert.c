@@ -100,7 +100,7 @@ static double interp(const double *x, double u)
          + q[2] * (-(t + 1) * t * (t - 2) / 2) + q[3] * ((t + 1) * t * (t - 1) / 6);
 }
 
-int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env)
+int gal_spectrum_envelope(gal_hilbert *h, const double *x, double band, double *env)
 {
     size_t n = h->n, p = h->pad, m = h->m, w = n / 8;
     double mean = 0;
@@ -125,6 +125,16 @@ int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env)
         h->ext[p + n - 1 + j] = interp(x, ce - (double)(n - 1 + j)) - mean; /* x(n-1+j) */
     }
     fftw_execute(h->fwd);                                 /* z[0..m/2] = X_k */
+    if (band > 0) {                                       /* keep 0 < f < band f_dominant */
+        size_t kd = 1;
+        double pd = -1;
+        for (size_t k = 1; k <= m / 2; k++) {
+            double pk = h->z[k][0] * h->z[k][0] + h->z[k][1] * h->z[k][1];
+            if (pk > pd) pd = pk, kd = k;
+        }
+        for (size_t k = 1; k <= m / 2; k++)
+            if ((double)k >= band * (double)kd) h->z[k][0] = h->z[k][1] = 0;
+    }
     /* positive frequencies 1..(m-1)/2 doubled; DC and (m even) Nyquist kept; negative ones 0 */
     for (size_t k = 1; k < (m + 1) / 2; k++) h->z[k][0] *= 2, h->z[k][1] *= 2;
     for (size_t k = m / 2 + 1; k < m; k++) h->z[k][0] = h->z[k][1] = 0;

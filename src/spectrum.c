@@ -155,8 +155,10 @@ int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double 
     if (lo < 0) lo = 0;
     if (hi > fnyq) hi = fnyq;
     if (!(hi >= lo)) return gal_error(GAL_EINPUT, "refine: no frequency range near %g Hz", f0);
-    /* grid search for the bracket */
+    /* grid search for the bracket; at most 513 points (a segment far shorter than the record,
+     * n > 200 nseg, gets a grid coarser than half a record bin) */
     size_t ng = (size_t)ceil((hi - lo) / h) + 1;
+    if (ng > 513) ng = 513, h = (hi - lo) / 512;
     double best = -1, fb = f0;
     for (size_t g = 0; g < ng; g++) {
         double fg = lo + (hi - lo) * (ng > 1 ? (double)g / (double)(ng - 1) : 0.5);

@@ -171,21 +171,30 @@ static void test_time_to_steady(void)
     }
     gal_hilbert *h = gal_spectrum_hilbert_alloc(n);
     CHECK(h != NULL, "%s", gal_error_message());
-    CHECK(gal_spectrum_envelope(h, x, env) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "%s", gal_error_message());
     double ts, level, want = tc + tau * log(19.0);
     CHECK(gal_spectrum_steady_time(env, n, dt, 0.05, &ts, &level) == GAL_OK, "%s",
           gal_error_message());
     printf("    time to steady: %.3f s, true %.3f s; level %.5f, true %.5f\n", ts, want, level, As);
     CHECK_NEAR(ts, want, 0.1);
     CHECK_REL(level, As, 0.005);
+    /* with white noise of 4% of the final amplitude, the band-limited envelope (0 < f < 2 f_d)
+     * still finds it within 0.5 s; the full-band envelope ripples by more than 5% */
+    rng_state = 12345;
+    for (size_t j = 0; j < n; j++) x[j] += 0.04 * As * nrand();
+    CHECK(gal_spectrum_envelope(h, x, GAL_SPECTRUM_ENVELOPE_BAND, env) == GAL_OK, "status");
+    CHECK(gal_spectrum_steady_time(env, n, dt, 0.05, &ts, &level) == GAL_OK, "status");
+    printf("    time to steady with 4%% noise: %.3f s, true %.3f s\n", ts, want);
+    CHECK_NEAR(ts, want, 0.5);
+    CHECK_REL(level, As, 0.01);
     /* the envelope of a steady sine is flat within 1e-4, at the ends too (edge guard) */
     for (size_t j = 0; j < n; j++) x[j] = 0.2 * cos(2 * PI * 0.77 * j * dt + 0.3);
-    CHECK(gal_spectrum_envelope(h, x, env) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "%s", gal_error_message());
     double emid = 0, eend = 0;
     for (int q = 0; q < 12; q++) {   /* periods of 125 and 129.87 samples, 6 phases each */
         double fq = q < 6 ? 0.8 : 0.77, ph = 0.3 + 0.5 * q;
         for (size_t j = 0; j < n; j++) x[j] = 0.2 * cos(2 * PI * fq * j * dt + ph);
-        CHECK(gal_spectrum_envelope(h, x, env) == GAL_OK, "%s", gal_error_message());
+        CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "%s", gal_error_message());
         for (size_t j = 0; j < n; j++) {
             double e = fabs(env[j] - 0.2) / 0.2;
             if (j > n / 50 && j < n - n / 50) emid = e > emid ? e : emid;
@@ -247,7 +256,7 @@ static void test_constant_record(void)
     CHECK(m.npeaks == 0, "no peaks, got %zu", m.npeaks);
     CHECK(isnan(m.frequency), "frequency %g must be NaN", m.frequency);
     gal_hilbert *h = gal_spectrum_hilbert_alloc(n);
-    CHECK(gal_spectrum_envelope(h, x, env) == GAL_OK, "status");
+    CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "status");
     double ts;
     CHECK(gal_spectrum_steady_time(env, n, 0.1, 0.05, &ts, NULL) == GAL_OK, "status");
     CHECK(isnan(ts), "no steady time for a constant record, got %g", ts);

@@ -85,7 +85,9 @@ typedef struct gal_peak {
  *     X(f) = sum_j w_j (x_j - mean) exp(-2 pi i f j dt),  w_j = 0.5 - 0.5 cos(2 pi j / n),
  * over [f0 - halfwidth, f0 + halfwidth] (a grid of half record bins 1/(2 n dt), then golden
  * section), and returns amplitude = 2 |X(f)| / sum_j w_j, exact for a pure sine up to the
- * leakage of other lines. No allocation; costs about 30 + 4 halfwidth n dt passes over x. */
+ * leakage of other lines. No allocation; costs about 40 + min(4 halfwidth n dt, 513) passes
+ * over x (the grid is capped at 513 points, coarser than half a record bin when halfwidth is
+ * more than 128 record bins, i.e. for a Welch segment shorter than n/200). */
 int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double halfwidth,
                         double *f, double *amplitude);
 
@@ -126,6 +128,8 @@ int gal_spectrum_orbit(const double *y, const double *z, size_t n, gal_orbit *o)
  * Envelope and time to steady galloping.
  * ====================================================================================== */
 
+#define GAL_SPECTRUM_ENVELOPE_BAND 2.0
+
 typedef struct gal_hilbert gal_hilbert;   /* workspace: buffers and the FFTW plans for n */
 
 gal_hilbert *gal_spectrum_hilbert_alloc(size_t n);   /* n >= GAL_TRACE_MIN_SAMPLES */
@@ -137,8 +141,11 @@ gal_hilbert *gal_spectrum_hilbert_free(gal_hilbert *h);
  * centre c within n/8 samples of that end about which the record is most symmetric (over
  * min(n/16, 64) samples; for an oscillation: a crest or trough, found to a fraction of a sample),
  * so that an oscillation continues smoothly (a steady sine: envelope error ~1e-8 at the ends).
- * Reflecting about the end sample itself would leave a kink whose error decays like 1/distance. */
-int gal_spectrum_envelope(gal_hilbert *h, const double *x, double *env);
+ * Reflecting about the end sample itself would leave a kink whose error decays like 1/distance.
+ * band > 0 keeps only the frequencies 0 < f < band f_d, f_d the largest bin of the (extended)
+ * record's spectrum, so that broadband noise and harmonics do not ripple the envelope of the
+ * dominant oscillation (band = 2 is GAL_SPECTRUM_ENVELOPE_BAND); band <= 0 keeps every frequency. */
+int gal_spectrum_envelope(gal_hilbert *h, const double *x, double band, double *env);
 
 /* Time to steady: final level L = median of env over the last 20% of the record; the result
  * *t_steady (s, from the first sample) is the first time after which |env - L| <= tol L
