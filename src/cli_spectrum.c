@@ -1,5 +1,17 @@
 /* cli_spectrum.c: `gallop spectrum TRACE.csv`: spectra and galloping measures of any trace
- * (DESIGN.md "Spectra and galloping measures"): a table on stdout, summary.json and psd.csv. */
+ * (DESIGN.md "Spectra and galloping measures"): a table on stdout, summary.json and psd.csv.
+ *
+ * Pipeline: read the trace -> envelope and time to steady of every column (whole record) ->
+ * steady part [--from, end], or automatic: from the latest time to steady of the columns but not
+ * after the middle of the record (and at least 16 samples) -> Welch PSD, peaks and amplitudes of
+ * the steady part -> orbit ellipses of the pairs -> files.
+ * summary.json: trace, time_column, samples, dt_s, steady_from_s, steady_from_rule ("auto" or
+ * "option --from"), steady_samples, segment, segments, frequency_resolution_hz; columns: an
+ * object per column with frequency_hz (null when none), peaks_hz, peak_amplitudes, amplitude (of
+ * the dominant sine), amplitude_pp, rms, mean, time_to_steady_s (trace time from which the
+ * envelope stays within 5% of its final level; null for a constant column); orbit (the first
+ * pair: y, z, major_semi_axis, minor_semi_axis, tilt_deg) when there is a pair, orbits (all
+ * pairs); wall_time_s. psd.csv: frequency_hz then one PSD column (unit^2/Hz) per column. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
