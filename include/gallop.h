@@ -5,4 +5,5 @@
 #include "gallop/core.h"
 #include "gallop/aero.h"
 #include "gallop/wind.h"
+#include "gallop/spectrum.h"
 #endif

@@ -9,6 +9,7 @@ typedef int (*gal_cli_fn)(int argc, char **argv);
 int gal_cli_version(int argc, char **argv);
 int gal_cli_check(int argc, char **argv);
 int gal_cli_modes(int argc, char **argv);
+int gal_cli_spectrum(int argc, char **argv);
 
 /* ---- shared by the sub-commands (src/cli_common.c) ---- */
 struct gal_scene;

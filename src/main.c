@@ -15,6 +15,8 @@ static const struct {
               "                                         sagged equilibrium and natural modes"},
     {"version", gal_cli_version, "gallop version                         print the version"},
     {"check", gal_cli_check, "gallop check SCENE [--set s.k=v ...]   parse and print the resolved scene"},
+    {"spectrum", gal_cli_spectrum, "gallop spectrum TRACE.csv [--column NAME]... [--pair Y,Z]... [--from T] [--segment N] [-o DIR]\n"
+                                   "                                         spectral analysis of any trace (DIR: TRACE's directory/spectrum)"},
 };
 
 static void usage(FILE *fp)

@@ -1,0 +1,423 @@
+/* test_spectrum.c: Welch PSD, peaks, amplitudes, orbit, envelope and the CSV trace reader on
+ * synthetic signals of known content (tolerances stated at each check). */
+#include "check.h"
+#include "gallop.h"
+
+#include <stdint.h>
+#include <unistd.h>
+
+#define PI 3.14159265358979323846
+
+/* A fixed-seed normal generator (xorshift64* and Box-Muller) so that the noise test is
+ * reproducible. */
+static uint64_t rng_state = 88172645463325252ull;
+static double urand(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return ((rng_state * 2685821657736338717ull) >> 11) * (1.0 / 9007199254740992.0);
+}
+static double nrand(void)
+{
+    double u = urand(), v = urand();
+    if (u < 1e-300) u = 1e-300;
+    return sqrt(-2 * log(u)) * cos(2 * PI * v);
+}
+
+/* Measure x[0..n) with the chosen segment; returns the status. */
+static int measure(const double *x, size_t n, double dt, gal_measures *m, double *df)
+{
+    size_t nseg = gal_spectrum_segment_choose(n);
+    gal_welch *w = gal_spectrum_welch_alloc(nseg);
+    if (!w) return GAL_EFAIL;
+    int st = gal_spectrum_measure(w, x, n, dt, 4, NULL, m);
+    *df = 1 / (nseg * dt);
+    gal_spectrum_welch_free(w);
+    return st;
+}
+
+static void test_segment_choose(void)
+{
+    CHECK(gal_spectrum_segment_choose(100) == 64, "n=100: %zu", gal_spectrum_segment_choose(100));
+    CHECK(gal_spectrum_segment_choose(1000) == 256, "n=1000: %zu", gal_spectrum_segment_choose(1000));
+    /* 8 segments of 4096 with 50% overlap need 4.5 * 4096 = 18432 samples */
+    CHECK(gal_spectrum_segment_choose(18432) == 4096, "%zu", gal_spectrum_segment_choose(18432));
+    CHECK(gal_spectrum_segment_choose(18431) == 2048, "%zu", gal_spectrum_segment_choose(18431));
+}
+
+/* A pure sine between two Welch bins: frequency within 0.1% of the bin width, amplitude 1%. */
+static void test_pure_sine_between_bins(void)
+{
+    size_t n = 20000;
+    double dt = 0.01, A = 0.73;
+    size_t nseg = gal_spectrum_segment_choose(n);
+    double df = 1 / (nseg * dt), f = 37.37 * df;   /* 0.37 bin off a bin */
+    double *x = malloc(n * sizeof *x);
+    for (size_t j = 0; j < n; j++) x[j] = 2.5 + A * sin(2 * PI * f * j * dt + 0.4);
+    gal_measures m;
+    double df2;
+    CHECK(measure(x, n, dt, &m, &df2) == GAL_OK, "%s", gal_error_message());
+    double ef = fabs(m.frequency - f) / df, ea = fabs(m.amplitude - A) / A;
+    printf("    pure sine: frequency error %.2e bins, amplitude error %.2e\n", ef, ea);
+    CHECK(ef < 1e-3, "frequency error %g bins", ef);
+    CHECK(ea < 1e-2, "amplitude error %g", ea);
+    CHECK_REL(m.mean, 2.5, 1e-3);
+    CHECK_REL(m.rms, A / sqrt(2), 1e-2);
+    CHECK_REL(m.peak_to_peak, 2 * A, 1e-3);
+    CHECK(m.npeaks == 1, "a pure sine has one peak above the floor, got %zu", m.npeaks);
+    free(x);
+}
+
+/* The worst case over many phases and sub-bin offsets, at low and high frequency. */
+static void test_sine_sweep(void)
+{
+    size_t n = 9000;
+    double dt = 0.002, A = 1.7, efmax = 0, eamax = 0;
+    size_t nseg = gal_spectrum_segment_choose(n);
+    double df = 1 / (nseg * dt);
+    double *x = malloc(n * sizeof *x);
+    for (int q = 0; q < 24; q++) {
+        double f = (q < 12 ? 3.0 : 80.0 + 7.0 * q) * df + 0.083 * q * df, ph = 0.7 * q;
+        for (size_t j = 0; j < n; j++) x[j] = A * cos(2 * PI * f * j * dt + ph);
+        gal_measures m;
+        double d;
+        CHECK(measure(x, n, dt, &m, &d) == GAL_OK, "%s", gal_error_message());
+        double ef = fabs(m.frequency - f) / df, ea = fabs(m.amplitude - A) / A;
+        if (ef > efmax) efmax = ef;
+        if (ea > eamax) eamax = ea;
+    }
+    printf("    sine sweep (24 cases, from 3 bins): max frequency error %.2e bins, max amplitude "
+           "error %.2e\n", efmax, eamax);
+    CHECK(efmax < 1e-3, "frequency error %g bins", efmax);
+    CHECK(eamax < 1e-2, "amplitude error %g", eamax);
+    free(x);
+}
+
+/* Two sines: both found, in the right order, with their frequencies and amplitudes. */
+static void test_two_sines(void)
+{
+    size_t n = 40000;
+    double dt = 0.005, f1 = 1.234, f2 = 3.71, a1 = 1.0, a2 = 0.3;
+    double *x = malloc(n * sizeof *x);
+    for (size_t j = 0; j < n; j++) {
+        double t = j * dt;
+        x[j] = a1 * sin(2 * PI * f1 * t) + a2 * cos(2 * PI * f2 * t + 1.0);
+    }
+    gal_measures m;
+    double df;
+    CHECK(measure(x, n, dt, &m, &df) == GAL_OK, "%s", gal_error_message());
+    CHECK(m.npeaks == 2, "two peaks expected, got %zu", m.npeaks);
+    if (m.npeaks >= 2) {
+        printf("    two sines: errors %.2e and %.2e bins, amplitudes %.2e and %.2e\n",
+               fabs(m.peaks[0].frequency - f1) / df, fabs(m.peaks[1].frequency - f2) / df,
+               fabs(m.peaks[0].amplitude - a1) / a1, fabs(m.peaks[1].amplitude - a2) / a2);
+        CHECK_NEAR(m.peaks[0].frequency, f1, 1e-3 * df);
+        CHECK_NEAR(m.peaks[1].frequency, f2, 1e-3 * df);
+        CHECK_REL(m.peaks[0].amplitude, a1, 1e-2);
+        CHECK_REL(m.peaks[1].amplitude, a2, 1e-2);
+    }
+    free(x);
+}
+
+/* White noise: sum(PSD) df equals the variance within 3% (Parseval), and the PSD is flat. */
+static void test_white_noise_parseval(void)
+{
+    size_t n = 65536;
+    double dt = 0.01, sigma = 0.8;
+    double *x = malloc(n * sizeof *x);
+    rng_state = 88172645463325252ull;
+    for (size_t j = 0; j < n; j++) x[j] = 1.0 + sigma * nrand();
+    size_t nseg = gal_spectrum_segment_choose(n);
+    gal_welch *w = gal_spectrum_welch_alloc(nseg);
+    size_t nf = gal_spectrum_welch_nfreq(w), nsg = 0;
+    double *psd = malloc(nf * sizeof *psd), df = 0;
+    CHECK(gal_spectrum_psd(w, x, n, dt, psd, &df, &nsg) == GAL_OK, "%s", gal_error_message());
+    CHECK(nsg >= 8, "at least 8 segments, got %zu", nsg);
+    double var = 0, mean = 0, integral = 0;
+    for (size_t j = 0; j < n; j++) mean += x[j];
+    mean /= n;
+    for (size_t j = 0; j < n; j++) var += (x[j] - mean) * (x[j] - mean);
+    var /= n;
+    for (size_t k = 0; k < nf; k++) integral += psd[k] * df;
+    printf("    white noise: sum(PSD) df / variance = %.4f\n", integral / var);
+    CHECK_REL(integral, var, 0.03);
+    /* flat: the mean over the upper half of the band is sigma^2 / (fs/2) = 2 sigma^2 dt, 5% */
+    double up = 0;
+    for (size_t k = nf / 2; k < nf - 1; k++) up += psd[k];
+    up /= (double)(nf - 1 - nf / 2);
+    CHECK_REL(up, 2 * sigma * sigma * dt, 0.05);
+    /* a sine: the PSD integral is A^2/2 */
+    for (size_t j = 0; j < n; j++) x[j] = 2.0 * sin(2 * PI * 7.3 * j * dt);
+    CHECK(gal_spectrum_psd(w, x, n, dt, psd, &df, NULL) == GAL_OK, "%s", gal_error_message());
+    integral = 0;
+    for (size_t k = 0; k < nf; k++) integral += psd[k] * df;
+    CHECK_REL(integral, 2.0, 0.01);
+    free(psd);
+    free(x);
+    gal_spectrum_welch_free(w);
+}
+
+/* A growing-then-steady oscillation with a logistic amplitude A(t) = As / (1 + e^{-(t-tc)/tau}):
+ * the envelope reaches 95% of As at tc + tau ln 19; the estimate must be within 0.1 s (0.13 period). */
+static void test_time_to_steady(void)
+{
+    double dt = 0.01, f = 1.3, As = 0.5, tc = 40, tau = 5, T = 200;
+    size_t n = (size_t)(T / dt);
+    double *x = malloc(n * sizeof *x), *env = malloc(n * sizeof *env);
+    for (size_t j = 0; j < n; j++) {
+        double t = j * dt;
+        x[j] = -3.0 + As / (1 + exp(-(t - tc) / tau)) * sin(2 * PI * f * t);
+    }
+    gal_hilbert *h = gal_spectrum_hilbert_alloc(n);
+    CHECK(h != NULL, "%s", gal_error_message());
+    CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "%s", gal_error_message());
+    double ts, level, want = tc + tau * log(19.0);
+    CHECK(gal_spectrum_steady_time(env, n, dt, 0.05, &ts, &level) == GAL_OK, "%s",
+          gal_error_message());
+    printf("    time to steady: %.3f s, true %.3f s; level %.5f, true %.5f\n", ts, want, level, As);
+    CHECK_NEAR(ts, want, 0.1);
+    CHECK_REL(level, As, 0.005);
+    /* with white noise of 4% of the final amplitude, the band-limited envelope (0 < f < 2 f_d)
+     * still finds it within 0.5 s; the full-band envelope ripples by more than 5% */
+    rng_state = 12345;
+    for (size_t j = 0; j < n; j++) x[j] += 0.04 * As * nrand();
+    CHECK(gal_spectrum_envelope(h, x, GAL_SPECTRUM_ENVELOPE_BAND, env) == GAL_OK, "status");
+    CHECK(gal_spectrum_steady_time(env, n, dt, 0.05, &ts, &level) == GAL_OK, "status");
+    printf("    time to steady with 4%% noise: %.3f s, true %.3f s\n", ts, want);
+    CHECK_NEAR(ts, want, 0.5);
+    CHECK_REL(level, As, 0.01);
+    /* the envelope of a steady sine is flat within 1e-4, at the ends too (edge guard) */
+    for (size_t j = 0; j < n; j++) x[j] = 0.2 * cos(2 * PI * 0.77 * j * dt + 0.3);
+    CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "%s", gal_error_message());
+    double emid = 0, eend = 0;
+    for (int q = 0; q < 12; q++) {   /* periods of 125 and 129.87 samples, 6 phases each */
+        double fq = q < 6 ? 0.8 : 0.77, ph = 0.3 + 0.5 * q;
+        for (size_t j = 0; j < n; j++) x[j] = 0.2 * cos(2 * PI * fq * j * dt + ph);
+        CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "%s", gal_error_message());
+        for (size_t j = 0; j < n; j++) {
+            double e = fabs(env[j] - 0.2) / 0.2;
+            if (j > n / 50 && j < n - n / 50) emid = e > emid ? e : emid;
+            else eend = e > eend ? e : eend;
+        }
+    }
+    printf("    envelope of a steady sine: max error %.2e inside, %.2e in the 2%% edges\n", emid,
+           eend);
+    CHECK(emid < 1e-4, "inside %g", emid);
+    CHECK(eend < 1e-4, "ends %g", eend);
+    CHECK(gal_spectrum_steady_time(env, n, dt, 0.05, &ts, NULL) == GAL_OK, "status");
+    CHECK(ts == 0, "a steady sine is steady from the start, got %g s", ts);
+    gal_spectrum_hilbert_free(h);
+    free(x);
+    free(env);
+}
+
+/* A tilted elliptic orbit: semi-axes within 1%, tilt within 0.5 deg, for several tilts. */
+static void test_orbit_ellipse(void)
+{
+    size_t n = 10000;
+    double dt = 0.01, f = 0.9, a = 1.2, b = 0.35;
+    double tilts[] = {30, -55, 90, 0, 89.5, -12};
+    double *y = malloc(n * sizeof *y), *z = malloc(n * sizeof *z);
+    for (size_t q = 0; q < sizeof tilts / sizeof tilts[0]; q++) {
+        double ph = tilts[q] * PI / 180;
+        for (size_t j = 0; j < n; j++) {
+            double c = cos(2 * PI * f * j * dt), s = sin(2 * PI * f * j * dt);
+            y[j] = 0.1 + a * cos(ph) * c - b * sin(ph) * s;
+            z[j] = -2.0 + a * sin(ph) * c + b * cos(ph) * s;
+        }
+        gal_orbit o;
+        CHECK(gal_spectrum_orbit(y, z, n, &o) == GAL_OK, "%s", gal_error_message());
+        CHECK_REL(o.major, a, 0.01);
+        CHECK_REL(o.minor, b, 0.01);
+        CHECK_NEAR(o.tilt_deg, tilts[q], 0.5);
+        CHECK(o.tilt_deg > -90 && o.tilt_deg <= 90, "tilt %g in (-90, 90]", o.tilt_deg);
+    }
+    /* a straight vertical line: minor 0, tilt 90 */
+    for (size_t j = 0; j < n; j++) y[j] = 0, z[j] = sin(2 * PI * f * j * dt);
+    gal_orbit o;
+    CHECK(gal_spectrum_orbit(y, z, n, &o) == GAL_OK, "status");
+    CHECK_NEAR(o.minor, 0, 1e-12);
+    CHECK_NEAR(o.tilt_deg, 90, 1e-9);
+    free(y);
+    free(z);
+}
+
+/* A constant record: no crash, zero RMS, no frequency; envelope gives no steady time. */
+static void test_constant_record(void)
+{
+    size_t n = 512;
+    double *x = malloc(n * sizeof *x), *env = malloc(n * sizeof *env);
+    for (size_t j = 0; j < n; j++) x[j] = 1.1;
+    gal_measures m;
+    double df;
+    CHECK(measure(x, n, 0.1, &m, &df) == GAL_OK, "%s", gal_error_message());
+    CHECK(m.rms == 0, "rms %g", m.rms);
+    CHECK(m.npeaks == 0, "no peaks, got %zu", m.npeaks);
+    CHECK(isnan(m.frequency), "frequency %g must be NaN", m.frequency);
+    gal_hilbert *h = gal_spectrum_hilbert_alloc(n);
+    CHECK(gal_spectrum_envelope(h, x, 0, env) == GAL_OK, "status");
+    double ts;
+    CHECK(gal_spectrum_steady_time(env, n, 0.1, 0.05, &ts, NULL) == GAL_OK, "status");
+    CHECK(isnan(ts), "no steady time for a constant record, got %g", ts);
+    gal_spectrum_hilbert_free(h);
+    free(x);
+    free(env);
+}
+
+/* Bad arguments: short records, bad step, tiny segments. */
+static void test_bad_arguments(void)
+{
+    double x[32] = {0};
+    CHECK(gal_spectrum_welch_alloc(4) == NULL, "segment of 4 must be refused");
+    CHECK(gal_spectrum_hilbert_alloc(8) == NULL, "envelope of 8 samples must be refused");
+    gal_welch *w = gal_spectrum_welch_alloc(64);
+    double psd[33];
+    CHECK(gal_spectrum_psd(w, x, 32, 0.1, psd, NULL, NULL) == GAL_EINPUT, "n < nseg");
+    CHECK(gal_spectrum_psd(w, x, 32, 0.0, psd, NULL, NULL) == GAL_EINPUT, "dt = 0");
+    gal_spectrum_welch_free(w);
+    CHECK(gal_spectrum_welch_free(NULL) == NULL, "free(NULL)");
+    CHECK(gal_spectrum_hilbert_free(NULL) == NULL, "free(NULL)");
+    CHECK(gal_trace_free(NULL) == NULL, "free(NULL)");
+}
+
+/* ---- CSV traces ---- */
+
+static char tmpdir[64];
+
+static char *write_file(const char *name, const char *text)
+{
+    char *p = gal_path_join(tmpdir, name);
+    FILE *fp = fopen(p, "w");
+    fputs(text, fp);
+    fclose(fp);
+    return p;
+}
+
+/* Reading `text` must fail with `status` and a message holding each of the given strings. */
+static void expect_error(const char *text, int status, const char *want1, const char *want2)
+{
+    char *p = write_file("bad.csv", text);
+    gal_trace *tr = (gal_trace *)1;
+    int st = gal_trace_read(p, &tr);
+    const char *msg = gal_error_message();
+    CHECK(st == status, "status %d, want %d (%s)", st, status, msg);
+    CHECK(tr == NULL, "no trace on failure");
+    CHECK(strstr(msg, p) != NULL, "message names the file: %s", msg);
+    CHECK(!want1 || strstr(msg, want1), "message has '%s': %s", want1, msg);
+    CHECK(!want2 || strstr(msg, want2), "message has '%s': %s", want2, msg);
+    remove(p);
+    free(p);
+}
+
+/* A good CSV with n rows, an optional defect inserted at row `bad` (text replaces the row). */
+static char *csv(size_t n, size_t bad, const char *badrow, double jitter)
+{
+    size_t cap = 64 * (n + 4);
+    char *s = malloc(cap), *e = s;
+    e += sprintf(e, "# a comment\nprobe_y,time,probe_z\n");
+    for (size_t k = 0; k < n; k++) {
+        if (k == bad) e += sprintf(e, "%s\n", badrow);
+        else e += sprintf(e, "%.6f,%.6f,%.6f\n", sin(0.3 * k), 0.05 * k + (k == 10 ? jitter : 0),
+                          cos(0.3 * k));
+    }
+    return s;
+}
+
+static void test_trace_good(void)
+{
+    char *text = csv(40, 99, "", 0);
+    char *p = write_file("good.csv", text);
+    gal_trace *tr = NULL;
+    CHECK(gal_trace_read(p, &tr) == GAL_OK, "%s", gal_error_message());
+    if (tr) {
+        CHECK(tr->n == 40 && tr->ncol == 2, "n %zu ncol %zu", tr->n, tr->ncol);
+        CHECK(!strcmp(tr->time_name, "time"), "time column is 'time', not the first");
+        CHECK(gal_trace_column(tr, "probe_z") == 1, "probe_z is data column 1");
+        CHECK(gal_trace_column(tr, "nope") == -1, "unknown column");
+        CHECK_REL(tr->dt, 0.05, 1e-9);
+        CHECK_NEAR(tr->x[1][3], cos(0.9), 1e-6);
+    }
+    tr = gal_trace_free(tr);
+    remove(p);
+    free(p);
+    free(text);
+}
+
+static void test_trace_errors(void)
+{
+    char *p = gal_path_join(tmpdir, "missing.csv");
+    gal_trace *tr;
+    CHECK(gal_trace_read(p, &tr) == GAL_EIO, "missing file");
+    CHECK(strstr(gal_error_message(), "missing.csv") != NULL, "%s", gal_error_message());
+    free(p);
+    expect_error("", GAL_EINPUT, "no header", NULL);
+    expect_error("# only a comment\n\n", GAL_EINPUT, "no header", NULL);
+    expect_error("0,1\n1,2\n", GAL_EINPUT, ":1:", "no header");
+    expect_error("time,a,a\n", GAL_EINPUT, "'a' appears twice", NULL);
+    expect_error("time,,b\n", GAL_EINPUT, "empty name", NULL);
+    expect_error("time\n0\n", GAL_EINPUT, "data column", NULL);
+    char *s;
+    /* the data start on line 3 (comment, header): row k is on line k + 3 */
+    s = csv(40, 5, "nan,0.25,1", 0);
+    expect_error(s, GAL_EINPUT, ":8:", "'probe_y'");
+    free(s);
+    s = csv(40, 5, "0.1,0.25,inf", 0);
+    expect_error(s, GAL_EINPUT, ":8:", "NaN or Inf");
+    free(s);
+    s = csv(40, 7, "0.1,0.35,abc", 0);
+    expect_error(s, GAL_EINPUT, ":10:", "'abc' is not a number");
+    free(s);
+    s = csv(40, 7, "0.1,0.35", 0);
+    expect_error(s, GAL_EINPUT, ":10:", "2 fields, the header has 3");
+    free(s);
+    s = csv(40, 7, "0.1,0.35,1,4", 0);
+    expect_error(s, GAL_EINPUT, ":10:", "4 fields");
+    free(s);
+    s = csv(40, 7, "0.1, ,1", 0);
+    expect_error(s, GAL_EINPUT, ":10:", "empty");
+    free(s);
+    s = csv(10, 99, "", 0);
+    expect_error(s, GAL_EINPUT, "10 samples", "at least 16");
+    free(s);
+    s = csv(40, 7, "0.1,0.30,1", 0);   /* time 0.30 after 0.30: not increasing */
+    expect_error(s, GAL_EINPUT, ":10:", "time must increase");
+    free(s);
+    s = csv(40, 99, "", 0.004);        /* one step 8% longer, the next 8% shorter */
+    expect_error(s, GAL_EINPUT, "not uniform", "resample");
+    free(s);
+    expect_error("t,x\n\x01\x02\xff,zz\n", GAL_EINPUT, "not a number", NULL);
+}
+
+/* Nearly uniform sampling (rounding of printed times) is accepted. */
+static void test_trace_nearly_uniform(void)
+{
+    char *s = csv(40, 99, "", 1e-6);
+    char *p = write_file("near.csv", s);
+    gal_trace *tr = NULL;
+    CHECK(gal_trace_read(p, &tr) == GAL_OK, "%s", gal_error_message());
+    gal_trace_free(tr);
+    remove(p);
+    free(p);
+    free(s);
+}
+
+int main(void)
+{
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/gallop_spectrum_XXXXXX");
+    if (!mkdtemp(tmpdir)) return 1;
+    RUN(test_segment_choose);
+    RUN(test_pure_sine_between_bins);
+    RUN(test_sine_sweep);
+    RUN(test_two_sines);
+    RUN(test_white_noise_parseval);
+    RUN(test_time_to_steady);
+    RUN(test_orbit_ellipse);
+    RUN(test_constant_record);
+    RUN(test_bad_arguments);
+    RUN(test_trace_good);
+    RUN(test_trace_errors);
+    RUN(test_trace_nearly_uniform);
+    rmdir(tmpdir);
+    return CHECK_SUMMARY();
+}
