@@ -12,6 +12,7 @@
 #   REPORT_GJ_FACTORS  factors on the scene's torsional stiffness GJ  ("0.5 1 2 4")
 #   REPORT_STEPS       steps to run, of: modes full reduced compare accuracy torsion (all)
 #   REPORT_TIMEOUT     seconds allowed to each gallop run              (900)
+#   REPORT_PSD_FMAX, REPORT_TERMINAL: see plot_scene.sh and README.md
 # Exit status: 0 every report written and every run succeeded, 1 a run or a figure failed (the
 # reports are still written), 2 bad usage.
 set -u

@@ -28,7 +28,7 @@ psd_fmax=${REPORT_PSD_FMAX:-5}   # Hz, upper end of the PSD plots
 gp=
 if command -v gnuplot >/dev/null 2>&1; then
     gp=gnuplot
-    if gnuplot -e 'set terminal' 2>&1 | grep -qw pngcairo; then
+    if [ "${REPORT_TERMINAL:-}" != png ] && gnuplot -e 'set terminal' 2>&1 | grep -qw pngcairo; then
         term="pngcairo enhanced size 1000,640 font 'Sans,10' linewidth 1.2"
     else
         term="png enhanced size 1000,640"
