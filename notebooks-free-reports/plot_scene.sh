@@ -1,0 +1,487 @@
+#!/usr/bin/env bash
+# plot_scene.sh OUTDIR [TITLE]: turns the output directory of one scene (modes/, full/, reduced/,
+# compare/, accuracy/, torsion/ as written by gallop and make_report.sh) into OUTDIR/report.md
+# with PNG figures in OUTDIR/fig/. It only reads files: every figure and table is made when its
+# input exists and left out (with a line saying so) when it does not. gnuplot makes the figures
+# (pngcairo if it has it, else png); without gnuplot the report has the tables only.
+# Exit status: 0 report written, 1 a figure failed (report still written), 2 bad usage.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/lib.sh"
+
+dir=${1:-}
+if [ -z "$dir" ] || [ ! -d "$dir" ]; then
+    echo "usage: plot_scene.sh OUTDIR [TITLE]  (OUTDIR: a scene's report directory)" >&2
+    exit 2
+fi
+title=${2:-$(basename "$dir")}
+fig=$dir/fig
+dat=$fig/data
+mkdir -p "$dat"
+md=$dir/report.md.part
+: > "$md"
+: > "$fig/gnuplot.log"
+failed=0
+psd_fmax=${REPORT_PSD_FMAX:-5}   # Hz, upper end of the PSD plots
+
+# ---- gnuplot terminal ----
+gp=
+if command -v gnuplot >/dev/null 2>&1; then
+    gp=gnuplot
+    if [ "${REPORT_TERMINAL:-}" != png ] && gnuplot -e 'set terminal' 2>&1 | grep -qw pngcairo; then
+        term="pngcairo enhanced size 1000,640 font 'Sans,10' linewidth 1.2"
+    else
+        term="png enhanced size 1000,640"
+    fi
+fi
+
+out() { printf '%s\n' "$@" >> "$md"; }
+
+# esc TEXT: TEXT for a gnuplot enhanced-text string ("_" would start a subscript).
+esc() { printf '%s' "$1" | sed 's/[_^@&~{}]/\\\\&/g'; }
+gtitle=$(esc "$title")
+
+# orbit_view FILE T0 T1 XCOL YCOL [XCOL YCOL]: gnuplot ranges for an orbit panel of the rows with
+# T0 <= time <= T1: both axes to the same scale when the orbit's extents differ by less than 4x,
+# else each axis on its own (said in the panel title).
+orbit_view() {
+    awk -v t0="$2" -v t1="$3" -v xs="$4 ${6:-}" -v ys="$5 ${7:-}" '
+        BEGIN { nx = split(xs, xc, " "); split(ys, yc, " ") }
+        NF && $1 >= t0 && $1 <= t1 {
+            for (i = 1; i <= nx; i++) {
+                x = $(xc[i]); y = $(yc[i])
+                if (!n++) { x0 = x1 = x; y0 = y1 = y }
+                if (x < x0) x0 = x; if (x > x1) x1 = x; if (y < y0) y0 = y; if (y > y1) y1 = y
+            }
+        }
+        END {
+            print "set size ratio 1"
+            if (!n) { print "scale = \"\""; exit }
+            hx = (x1 - x0) / 2; hy = (y1 - y0) / 2; h = hx > hy ? hx : hy; l = hx < hy ? hx : hy
+            if (h > 0 && l * 4 >= h) {
+                r = 1.1 * h
+                printf "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", (x0 + x1) / 2 - r, (x0 + x1) / 2 + r, (y0 + y1) / 2 - r, (y0 + y1) / 2 + r
+                print "scale = \", same scale\""
+            } else {
+                print "set autoscale xy"
+                print "scale = \", axes to different scales\""
+            }
+        }' "$1"
+}
+
+# plot NAME CAPTION [WIDTHxHEIGHT]: runs the gnuplot commands on stdin into fig/NAME.png and puts
+# the figure in the report, or a line saying why not.
+plot() {
+    local name=$1 caption=$2 size=${3:-} png=$fig/$1.png t=$term
+    if [ -z "$gp" ]; then
+        cat > /dev/null
+        out "_Figure ${name} not made: gnuplot is not installed._" ""
+        return 0
+    fi
+    [ -n "$size" ] && t=$(printf '%s' "$term" | sed "s/size [0-9]*,[0-9]*/size ${size/x/,}/")
+    rm -f "$png"
+    {
+        printf 'set terminal %s\nset output "%s"\n' "$t" "$png"
+        printf 'set grid lc rgb "#d0d0d0"\nset key box opaque samplen 2\nset datafile missing "nan"\n'
+        printf 'set style data lines\nset colorsequence default\n'
+        cat
+        printf 'unset output\n'
+    } | { echo "== $name" >> "$fig/gnuplot.log"; gnuplot >> "$fig/gnuplot.log" 2>&1; }
+    if [ -s "$png" ]; then
+        out "![${caption}](fig/${name}.png)" "" "*${caption}*" ""
+    else
+        out "_Figure ${name} failed (see fig/gnuplot.log)._" ""
+        failed=1
+    fi
+}
+
+# md_table FILE COLUMN...: a Markdown table of the named CSV columns.
+md_table() {
+    local file=$1; shift
+    local names="$*"
+    out "| ${names// / | } |"
+    out "|$(printf '%s\n' "$@" | sed 's/.*/---|/' | tr -d '\n')"
+    csv_pick "$file" "$@" | awk 'NF { line = "|"; for (i = 1; i <= NF; i++) line = line " " $i " |"; print line }' >> "$md"
+    out ""
+}
+
+# json_details FILE LABEL: every scalar of a summary.json, folded.
+json_details() {
+    [ -s "$1" ] || return 0
+    out "<details><summary>All figures of ${2}</summary>" "" "| key | value |" "|---|---|"
+    jflat "$1" | awk -F'\t' '{ printf "| %s | %s |\n", $1, $2 }' >> "$md"
+    out "" "</details>" ""
+}
+
+# span FILE COLUMN: "tmin tmax" of the first column of a picked data file.
+span() { awk 'NF { if (n++ == 0) a = $1; b = $1 } END { print a + 0, b + 0 }' "$1"; }
+
+# probe_col FILE WHAT: the mid-span probe column for WHAT (vertical, horizontal, twist, along),
+# falling back to the first probe that has it.
+probe_col() {
+    local c
+    c=$(csv_find_col "$1" "^p0?\\.50*_$2_")
+    [ -n "$c" ] || c=$(csv_find_col "$1" "^p[0-9.]*_$2_")
+    [ -n "$c" ] || c=$(csv_find_col "$1" "$2")
+    printf '%s' "$c"
+}
+
+# ======================================================================================
+out "# Galloping report: ${title}" ""
+out "Made by \`notebooks-free-reports/plot_scene.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC') from the files in \`${dir}\`." ""
+if [ -s "$dir/runs.csv" ]; then
+    out "## Runs" ""
+    md_table "$dir/runs.csv" step status seconds
+fi
+if [ -s "$dir/notes.md" ]; then
+    out "## Notes" ""
+    cat "$dir/notes.md" >> "$md"
+    out ""
+fi
+if [ -s "$dir/scene.ini" ]; then
+    out "<details><summary>Resolved scene (gallop check)</summary>" "" '```ini'
+    cat "$dir/scene.ini" >> "$md"
+    out '```' "" "</details>" ""
+fi
+
+# ======================================================================================
+# Equilibrium and modes
+m=$dir/modes
+out "## Static equilibrium" ""
+if [ -s "$m/summary.json" ]; then
+    s=$m/summary.json
+    out "| quantity | value |" "|---|---|"
+    out "| mid-span sag | $(num %.4g "$(jfind "$s" sag_m)") m |"
+    out "| horizontal tension | $(num %.6g "$(jfind "$s" horizontal_tension_n)") N |"
+    out "| unstretched length | $(num %.8g "$(jfind "$s" unstretched_length_m)") m |"
+    tl=$(jfind "$s" tension_left_n); tright=$(jfind "$s" tension_right_n)
+    [ -n "$tl$tright" ] && out "| support tensions (left / right) | $(num %.6g "$tl") / $(num %.6g "$tright") N |"
+    out "| elements / degrees of freedom | $(num %d "$(jfind "$s" elements)") / $(num %d "$(jfind "$s" dofs)") |"
+    out "| Newton iterations | $(num %d "$(jfind "$s" newton_iterations)") |"
+    out "| wall time (statics + modes) | $(num %.3g "$(jfind "$s" wall_time_s)") s |" ""
+fi
+if has_rows "$m/equilibrium.csv" && csv_pick "$m/equilibrium.csv" x_m z_m tension_n > "$dat/equilibrium.dat"; then
+    sag=$(jfind "$m/summary.json" sag_m 2>/dev/null)
+    plot equilibrium "Sagged static equilibrium: shape (z against x) and tension along the span" 1000x700 <<EOF
+set multiplot layout 2,1 title "Static equilibrium: $gtitle$( [ -n "$sag" ] && printf ', mid-span sag %.3g m' "$sag")"
+set xlabel "x, along the span (m)"
+set ylabel "z, height (m)"
+set key bottom right
+plot "$dat/equilibrium.dat" using 1:2 with linespoints pt 7 ps 0.5 lw 2 title "conductor", \
+     "" using 1:2 every ::0::0 with points pt 5 ps 1.5 lc rgb "black" title "supports", \
+     "" using 1:2 every ::$(( $(wc -l < "$dat/equilibrium.dat") - 1 )) with points pt 5 ps 1.5 lc rgb "black" notitle
+set ylabel "tension (kN)"
+set key top center
+plot "$dat/equilibrium.dat" using 1:(\$3/1000) with linespoints pt 7 ps 0.5 lw 2 lc 2 title "axial tension"
+unset multiplot
+EOF
+else
+    out "_No equilibrium (modes/equilibrium.csv missing)._" ""
+fi
+
+out "## Natural modes" ""
+if has_rows "$m/modes.csv"; then
+    out "Selected modes (the basis of the reduced model); shares are of the modal kinetic energy." ""
+    csv_pick "$m/modes.csv" index family symmetry frequency_hz period_s share_vertical share_horizontal share_torsional share_axial selected |
+        awk 'BEGIN { print "| mode | family | symmetry | frequency (Hz) | period (s) | vertical | horizontal | torsional | axial |"
+                     print "|---|---|---|---|---|---|---|---|---|" }
+             $10 == 1 { printf "| %s | %s | %s | %.5g | %.4g | %.3f | %.3f | %.3f | %.3f |\n", $1, $2, $3, $4, $5, $6, $7, $8, $9 }' >> "$md"
+    out ""
+    nsel=$(csv_pick "$m/modes.csv" selected | awk '$1 != 1 { n++ } END { print n + 0 }')
+    [ "$nsel" -gt 0 ] && out "${nsel} more computed mode(s) not selected (see modes/modes.csv)." ""
+else
+    out "_No modes (modes/modes.csv missing)._" ""
+fi
+if has_rows "$m/shapes.csv"; then
+    # symmetry of each mode, for the keys
+    if has_rows "$m/modes.csv"; then csv_pick "$m/modes.csv" index symmetry > "$dat/symmetry.dat"; else : > "$dat/symmetry.dat"; fi
+    for family in vertical horizontal torsional axial; do
+        case $family in
+            vertical) comp=uz; what="vertical displacement u_z" ;;
+            horizontal) comp=uy; what="horizontal displacement u_y" ;;
+            torsional) comp=twist; what="twist" ;;
+            axial) comp=ux; what="axial displacement u_x" ;;
+        esac
+        # one block per mode, each scaled to a largest value of +1; the plot command with the keys
+        csv_pick "$m/shapes.csv" mode family frequency_hz x_m "$comp" | awk -v fam="$family" -v dat="$dat/shapes_$family.dat" \
+            -v symf="$dat/symmetry.dat" '
+            BEGIN { while ((getline l < symf) > 0) { split(l, a, " "); sym[a[1]] = a[2] } }
+            NF && $2 == fam {
+                if (!($1 in seen)) { seen[$1] = 1; order[++nm] = $1; freq[$1] = $3 }
+                k = $1; n[k]++; x[k, n[k]] = $4; v[k, n[k]] = $5
+                if ($5 * $5 > big[k] * big[k]) big[k] = $5
+            }
+            END {
+                if (nm == 0) exit 1
+                cmd = "plot "
+                for (b = 1; b <= nm; b++) {
+                    k = order[b]; s = big[k] != 0 ? 1 / big[k] : 1
+                    for (i = 1; i <= n[k]; i++) print x[k, i], v[k, i] * s > dat
+                    printf "\n\n" > dat
+                    t = sprintf("mode %s: %.4g Hz%s", k, freq[k], (k in sym) ? ", " sym[k] : "")
+                    cmd = cmd sprintf("%s\"%s\" index %d using 1:2 with linespoints pt 7 ps 0.5 lw 2 title \"%s\"", b > 1 ? ", " : "", dat, b - 1, t)
+                }
+                print cmd
+            }' > "$dat/shapes_$family.gp" || continue
+        plot "modes_$family" "${family^} mode shapes (${what}, each scaled to a largest value of 1), with their frequencies" <<EOF
+set title "${family^} modes of $gtitle: ${what} along the span"
+set xlabel "x, along the span (m)"
+set ylabel "${what} (scaled, largest = 1)"
+set key outside right top
+set yrange [-1.15:1.15]
+$(cat "$dat/shapes_$family.gp")
+EOF
+    done
+else
+    out "_No mode shapes (modes/shapes.csv missing)._" ""
+fi
+json_details "$m/summary.json" "modes/summary.json"
+
+# ======================================================================================
+# Simulations: one section per model
+sim_table_done=0
+for model in full reduced; do
+    d=$dir/$model
+    [ -e "$d/trace.csv" ] || [ -e "$d/summary.json" ] || continue
+    if [ $sim_table_done = 0 ]; then
+        out "## Galloping simulations" ""
+        out "| model | wall time (s) | frequency (Hz) | amplitude_m | time to steady (s) |" "|---|---|---|---|---|"
+        for mm in full reduced; do
+            s=$dir/$mm/summary.json
+            [ -s "$s" ] || continue
+            out "| $mm | $(num %.4g "$(jfind "$s" wall_time_s)") | $(num %.5g "$(jfind "$s" frequency_hz)") | $(num %.4g "$(jfind "$s" amplitude_m)") | $(num %.4g "$(jfind "$s" time_to_steady_s vertical)") |"
+        done
+        out ""
+        sim_table_done=1
+    fi
+    out "### ${model^} model" ""
+    tr=$d/trace.csv
+    if has_rows "$tr"; then
+        cv=$(probe_col "$tr" vertical); ch=$(probe_col "$tr" horizontal); ct=$(probe_col "$tr" twist)
+        if [ -n "$cv" ] && [ -n "$ch" ]; then
+            cols="time_s $ch $cv"; [ -n "$ct" ] && cols="$cols $ct"
+            csv_pick "$tr" $cols > "$dat/trace_$model.dat"
+            probe=${cv%%_*}
+            np=2; tw=""; tens=""
+            if [ -n "$ct" ]; then np=$((np + 1)); tw="set ylabel \"twist (deg)\"
+plot \"$dat/trace_$model.dat\" using 1:4 lc 3 title \"twist\""; fi
+            if [ -n "$(csv_col "$tr" tension_left_n)" ] && [ -n "$(csv_col "$tr" tension_right_n)" ]; then
+                csv_pick "$tr" time_s tension_left_n tension_right_n > "$dat/tension_$model.dat"
+                np=$((np + 1)); tens="set ylabel \"support tension (kN)\"
+plot \"$dat/tension_$model.dat\" using 1:(\$2/1000) lc 4 title \"left\", \"\" using 1:(\$3/1000) lc 7 title \"right\""
+            fi
+            plot "trace_$model" "${model^} model: mid-span probe (${probe}) against time$( [ -n "$tens" ] && printf ', and support tensions')" 1000x$((220 * np + 60)) <<EOF
+set multiplot layout $np,1 title "${model^} model, $gtitle: probe $(esc "$probe")"
+set xlabel "time (s)"
+set key top left
+set ylabel "vertical (m)"
+plot "$dat/trace_$model.dat" using 1:3 lc 1 title "vertical"
+set ylabel "horizontal (m)"
+plot "$dat/trace_$model.dat" using 1:2 lc 2 title "horizontal"
+$tw
+$tens
+unset multiplot
+EOF
+            read -r t0 t1 <<<"$(span "$dat/trace_$model.dat")"
+            w=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print (b - a) / 4 }')
+            e1=$(awk -v a="$t0" -v w="$w" 'BEGIN { print a + w }'); l0=$(awk -v b="$t1" -v w="$w" 'BEGIN { print b - w }')
+            plot "orbit_$model" "${model^} model: orbit of the mid-span probe, first quarter of the run (left, onset) and last quarter (right, developed galloping), as the paper's Figs. 4 and 5" 1100x560 <<EOF
+set multiplot layout 1,2 title "${model^} model, $gtitle: orbit of probe $(esc "$probe") (seen along the span)"
+set xlabel "horizontal (m)"
+set ylabel "vertical (m)"
+set key top left
+$(orbit_view "$dat/trace_$model.dat" "$t0" "$e1" 2 3)
+set title sprintf("early: %.1f to %.1f s", $t0, $e1) . scale
+plot "$dat/trace_$model.dat" using (\$1 <= $e1 ? \$2 : NaN):3 lc 1 title "orbit"
+$(orbit_view "$dat/trace_$model.dat" "$l0" "$t1" 2 3)
+set title sprintf("late: %.1f to %.1f s", $l0, $t1) . scale
+plot "$dat/trace_$model.dat" using (\$1 >= $l0 ? \$2 : NaN):3 lc 2 title "orbit"
+unset multiplot
+EOF
+        else
+            out "_trace.csv has no vertical and horizontal probe columns._" ""
+        fi
+    else
+        out "_No trace (${model}/trace.csv missing or empty)._" ""
+    fi
+    if has_rows "$d/psd.csv" && [ -n "$(csv_col "$d/psd.csv" frequency_hz)" ]; then
+        pcols=$(csv_header "$d/psd.csv" | tr ',' '\n' | grep -v '^frequency_hz$' | tr '\n' ' ')
+        csv_pick "$d/psd.csv" frequency_hz $pcols > "$dat/psd_$model.dat"
+        pc="plot "; i=2
+        for c in $pcols; do
+            pc="$pc$( [ $i -gt 2 ] && printf ', ')\"$dat/psd_$model.dat\" using 1:(\$$i > 0 ? \$$i : NaN) lw 1.5 title \"$(esc "$c")\""
+            i=$((i + 1))
+        done
+        plot "psd_$model" "${model^} model: power spectral density of the probe signals (log scale)" <<EOF
+set title "${model^} model, $gtitle: power spectral density"
+set xlabel "frequency (Hz)"
+set ylabel "PSD (unit^2/Hz: m^2/Hz, deg^2/Hz, N^2/Hz)"
+set logscale y
+set format y "10^{%L}"
+set xrange [0:$(awk -v m="$psd_fmax" 'NF { if ($1 > x) x = $1 } END { print (x > 0 && x < m) ? x : m }' "$dat/psd_$model.dat")]
+$pc
+EOF
+    fi
+    json_details "$d/summary.json" "${model}/summary.json"
+done
+
+# ======================================================================================
+# Full against reduced
+c=$dir/compare
+if [ -e "$c/compare.csv" ] || [ -e "$c/summary.json" ]; then
+    out "## Full against reduced model" ""
+    s=$c/summary.json
+    if [ -s "$s" ]; then
+        out "| figure | full | reduced |" "|---|---|---|"
+        jflat "$s" | awk -F'\t' '
+            $1 ~ /^full\./ { k = substr($1, 6); if (!(k in f)) order[++n] = k; f[k] = $2 }
+            $1 ~ /^reduced\./ { k = substr($1, 9); if (!(k in f) && !(k in r)) order[++n] = k; r[k] = $2 }
+            END { for (i = 1; i <= n; i++) { k = order[i]; printf "| %s | %s | %s |\n", k, (k in f) ? f[k] : "", (k in r) ? r[k] : "" } }' >> "$md"
+        out ""
+        out "| measure | value |" "|---|---|"
+        for k in frequency_error amplitude_error speedup; do
+            v=$(jfind "$s" "$k")
+            [ -n "$v" ] && out "| $k | $(num %.4g "$v") |"
+        done
+        out ""
+    fi
+    cc=$c/compare.csv
+    if has_rows "$cc" && csv_pick "$cc" time_s full_vertical_m reduced_vertical_m full_horizontal_m reduced_horizontal_m > "$dat/compare.dat"; then
+        np=2; tw=""
+        if csv_pick "$cc" full_twist_deg reduced_twist_deg > "$dat/compare_twist.dat" 2>/dev/null; then
+            paste -d' ' "$dat/compare.dat" "$dat/compare_twist.dat" > "$dat/compare_all.dat"
+            mv "$dat/compare_all.dat" "$dat/compare.dat"
+            np=3; tw="set ylabel \"twist (deg)\"
+plot \"$dat/compare.dat\" using 1:6 lc 1 title \"full\", \"\" using 1:7 lc 2 dt 2 lw 1.5 title \"reduced\""
+        fi
+        plot compare_traces "Mid-span probe, full (solid) against reduced (dashed) model" 1000x$((230 * np + 60)) <<EOF
+set multiplot layout $np,1 title "Full against reduced model, $gtitle: mid-span"
+set xlabel "time (s)"
+set key top left
+set ylabel "vertical (m)"
+plot "$dat/compare.dat" using 1:2 lc 1 title "full", "" using 1:3 lc 2 dt 2 lw 1.5 title "reduced"
+set ylabel "horizontal (m)"
+plot "$dat/compare.dat" using 1:4 lc 1 title "full", "" using 1:5 lc 2 dt 2 lw 1.5 title "reduced"
+$tw
+unset multiplot
+EOF
+        read -r t0 t1 <<<"$(span "$dat/compare.dat")"
+        w=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print (b - a) / 4 }')
+        e1=$(awk -v a="$t0" -v w="$w" 'BEGIN { print a + w }'); l0=$(awk -v b="$t1" -v w="$w" 'BEGIN { print b - w }')
+        plot compare_orbits "Mid-span orbit, full against reduced model: first quarter of the run (left) and last quarter (right)" 1100x560 <<EOF
+set multiplot layout 1,2 title "Full against reduced model, $gtitle: mid-span orbit"
+set xlabel "horizontal (m)"
+set ylabel "vertical (m)"
+set key top left
+$(orbit_view "$dat/compare.dat" "$t0" "$e1" 4 2 5 3)
+set title sprintf("early: %.1f to %.1f s", $t0, $e1) . scale
+plot "$dat/compare.dat" using (\$1 <= $e1 ? \$4 : NaN):2 lc 1 title "full", "" using (\$1 <= $e1 ? \$5 : NaN):3 lc 2 dt 2 lw 1.5 title "reduced"
+$(orbit_view "$dat/compare.dat" "$l0" "$t1" 4 2 5 3)
+set title sprintf("late: %.1f to %.1f s", $l0, $t1) . scale
+plot "$dat/compare.dat" using (\$1 >= $l0 ? \$4 : NaN):2 lc 1 title "full", "" using (\$1 >= $l0 ? \$5 : NaN):3 lc 2 dt 2 lw 1.5 title "reduced"
+unset multiplot
+EOF
+    else
+        out "_No comparison traces (compare/compare.csv missing or without the expected columns)._" ""
+    fi
+    json_details "$s" "compare/summary.json"
+fi
+
+# ======================================================================================
+# Accuracy against time
+a=$dir/accuracy/accuracy.csv
+if [ -e "$a" ]; then
+    out "## Accuracy against time" ""
+    if has_rows "$a" && csv_pick "$a" study setting value error wall_time_s chosen > "$dat/accuracy_rows.dat"; then
+        out "Each study varies one setting; the **bold** row is the cheapest setting that meets the tolerance (chosen)." ""
+        out "| study | setting | value | error | wall time (s) | chosen |" "|---|---|---|---|---|---|"
+        awk '{ b = $6 == 1 ? "**" : ""; printf "| %s%s%s | %s%s%s | %s | %s | %s | %s |\n", b, $1, b, b, $2, b, $3, $4, $5, $6 == 1 ? "yes" : "" }' \
+            "$dat/accuracy_rows.dat" >> "$md"
+        out ""
+        # one block per study, in order of first appearance; chosen points apart
+        awk -v dat="$dat/accuracy.dat" -v ch="$dat/accuracy_chosen.dat" '
+            { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } k = $1; m[k]++; row[k, m[k]] = $5 " " $4 " " $2
+              if ($6 == 1) print $5, $4, $1 "=" $2 > ch }
+            END { printf "" > ch
+                  for (i = 1; i <= n; i++) { k = order[i]; for (j = 1; j <= m[k]; j++) print row[k, j] > dat; printf "\n\n" > dat; print k } }' \
+            "$dat/accuracy_rows.dat" > "$dat/accuracy_studies.txt"
+        ac="plot "; i=0
+        while read -r st; do
+            ac="$ac\"$dat/accuracy.dat\" index $i using 1:(\$2 > 0 ? \$2 : NaN) with linespoints pt 7 ps 1 lw 2 lc $((i + 1)) title \"${st//_/ }\", "
+            i=$((i + 1))
+        done < "$dat/accuracy_studies.txt"
+        ac="$ac\"$dat/accuracy_chosen.dat\" using 1:(\$2 > 0 ? \$2 : NaN) with points pt 6 ps 3 lw 2 lc rgb \"black\" title \"chosen\""
+        ac="$ac, \"\" using 1:(\$2 > 0 ? \$2 : NaN):3 with labels offset char 1,1 left font \",8\" noenhanced notitle"
+        plot accuracy "Accuracy against time: error against wall time for each study (log-log); circled, the setting chosen in each study" <<EOF
+set title "Accuracy against time, $gtitle"
+set xlabel "wall time (s)"
+set ylabel "error (relative, against the finest setting)"
+set logscale xy
+set format y "10^{%L}"
+set key outside right top
+$ac
+EOF
+        nz=$(awk '$4 <= 0 { n++ } END { print n + 0 }' "$dat/accuracy_rows.dat")
+        [ "$nz" -gt 0 ] && out "${nz} row(s) with zero error (the reference settings) cannot be shown on the log scale." ""
+    else
+        out "_accuracy/accuracy.csv is empty or lacks the columns study,setting,value,error,wall_time_s,chosen._" ""
+    fi
+fi
+
+# ======================================================================================
+# Torsional stiffness study
+ts=$dir/torsion/study.csv
+if [ -e "$ts" ]; then
+    out "## Torsional stiffness study" ""
+    out "Reduced-model runs with the conductor's torsional stiffness GJ scaled; mid-span vertical motion." ""
+    out "| GJ factor | GJ (N m^2/rad) | time to steady (s) | vertical peak-to-peak, summary (m) | vertical peak-to-peak, last quarter of trace (m) | frequency (Hz) | wall time (s) |"
+    out "|---|---|---|---|---|---|---|"
+    ec="plot "; i=0
+    while IFS=, read -r fac gj sub status; do
+        [ "$fac" = factor ] && continue
+        d=$dir/torsion/$sub
+        if [ "$status" != ok ]; then
+            out "| $fac | $(num %.4g "$gj") | run ${status} | | | | |"
+            continue
+        fi
+        s=$d/summary.json
+        tts=$(jfind "$s" time_to_steady_s vertical)
+        pp=$(jfind "$s" peak_to_peak_m vertical); [ -n "$pp" ] || pp=$(jfind "$s" peak_to_peak vertical)
+        [ -n "$pp" ] || pp=$(jfind "$s" amplitude_m)
+        fr=$(jfind "$s" frequency_hz vertical)
+        wt=$(jfind "$s" wall_time_s)
+        tp=""
+        if has_rows "$d/trace.csv"; then
+            cv=$(probe_col "$d/trace.csv" vertical)
+            if [ -n "$cv" ] && csv_pick "$d/trace.csv" time_s "$cv" > "$dat/torsion_$i.dat"; then
+                read -r t0 t1 <<<"$(span "$dat/torsion_$i.dat")"
+                tp=$(awk -v l0="$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - (b - a) / 4 }')" \
+                    'NF && $1 >= l0 { if (!n++) { lo = hi = $2 } if ($2 < lo) lo = $2; if ($2 > hi) hi = $2 } END { if (n) print hi - lo }' "$dat/torsion_$i.dat")
+                # envelope: min and max over windows of 1.5 periods (or 1/100 of the run)
+                win=$(awk -v f="$fr" -v a="$t0" -v b="$t1" 'BEGIN { print (f + 0 > 0) ? 1.5 / f : (b - a) / 100 }')
+                awk -v w="$win" -v a="$t0" 'NF { k = int(($1 - a) / w); if (!(k in lo) || $2 < lo[k]) lo[k] = $2; if (!(k in hi) || $2 > hi[k]) hi[k] = $2; if (k > m) m = k }
+                    END { if (m > 0) m--; for (k = 0; k <= m; k++) if (k in lo) print a + (k + 0.5) * w, lo[k], hi[k] }' "$dat/torsion_$i.dat" > "$dat/envelope_$i.dat"
+                ec="$ec\"$dat/envelope_$i.dat\" using 1:3 lw 2 lc $((i + 1)) title \"GJ x $fac ($(num %.3g "$gj") N m^2/rad)\", \"\" using 1:2 lw 2 lc $((i + 1)) notitle, "
+                i=$((i + 1))
+            fi
+        fi
+        out "| $fac | $(num %.4g "$gj") | $(num %.4g "$tts") | $(num %.4g "$pp") | $(num %.4g "$tp") | $(num %.5g "$fr") | $(num %.3g "$wt") |"
+    done < "$ts"
+    out ""
+    if [ $i -gt 0 ]; then
+        plot torsion_envelope "Torsional stiffness study: envelope (upper and lower) of the mid-span vertical motion for each GJ" <<EOF
+set title "Torsional stiffness study, $gtitle: envelope of the mid-span vertical motion (reduced model)"
+set xlabel "time (s)"
+set ylabel "vertical displacement, envelope (m)"
+set autoscale xfix
+set key outside right top
+${ec%, }
+EOF
+    else
+        out "_No traces in the torsional stiffness study._" ""
+    fi
+fi
+
+mv "$md" "$dir/report.md"
+[ $failed = 0 ] || echo "plot_scene.sh: some figures failed, see $fig/gnuplot.log" >&2
+exit $failed
