@@ -9,6 +9,8 @@ typedef int (*gal_cli_fn)(int argc, char **argv);
 int gal_cli_version(int argc, char **argv);
 int gal_cli_check(int argc, char **argv);
 int gal_cli_modes(int argc, char **argv);
+int gal_cli_simulate(int argc, char **argv);
+int gal_cli_compare(int argc, char **argv);
 int gal_cli_spectrum(int argc, char **argv);
 
 /* ---- shared by the sub-commands (src/cli_common.c) ---- */

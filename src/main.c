@@ -13,6 +13,10 @@ static const struct {
 } commands[] = {
     {"modes", gal_cli_modes, "gallop modes SCENE [-o DIR] [--set s.k=v ...]\n"
               "                                         sagged equilibrium and natural modes"},
+    {"simulate", gal_cli_simulate, "gallop simulate SCENE [--model reduced|full] [-o DIR] [--set s.k=v ...]\n"
+                                   "                                         a galloping run: trace.csv, summary.json"},
+    {"compare", gal_cli_compare, "gallop compare SCENE [-o DIR] [--set s.k=v ...]\n"
+                                 "                                         full against reduced, same wind"},
     {"version", gal_cli_version, "gallop version                         print the version"},
     {"check", gal_cli_check, "gallop check SCENE [--set s.k=v ...]   parse and print the resolved scene"},
     {"spectrum", gal_cli_spectrum, "gallop spectrum TRACE.csv [--column NAME]... [--pair Y,Z]... [--from T] [--segment N] [-o DIR]\n"

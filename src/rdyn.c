@@ -153,7 +153,14 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
     d->sys.jacobian = NULL;
     d->sys.dimension = (size_t)2 * r;
     d->sys.params = d;
-    d->drv = gsl_odeiv2_driver_alloc_y_new(&d->sys, gsl_odeiv2_step_rk8pd, h0, 0.0, tol);
+    /* error per step: tol relative to the state, and tol times the identification amplitude (and
+     * that amplitude times the frequency for the velocities) in absolute terms, so that a state at
+     * rest is not held to a zero error */
+    double *sc = malloc((size_t)2 * r * sizeof(double));
+    if (!sc) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return gal_rdyn_free(d); }
+    for (int i = 0; i < r; i++) sc[i] = rm->eta_ref[i], sc[r + i] = rm->eta_ref[i] * sqrt(rm->omega2[i]);
+    d->drv = gsl_odeiv2_driver_alloc_scaled_new(&d->sys, gsl_odeiv2_step_rk8pd, h0, tol, tol, 1.0, 0.0, sc);
+    free(sc);
     if (!d->drv) {
         gal_error(GAL_ENOMEM, "reduced model: cannot allocate the ODE driver");
         return gal_rdyn_free(d);
