@@ -11,7 +11,7 @@ gal_rdyn *gal_rdyn_free(gal_rdyn *d)
 {
     if (d) {
         free(d->wq); free(d->req); free(d->teq); free(d->aeq); free(d->phr); free(d->phs); free(d->pht);
-        free(d->damp); free(d->y); free(d->fr); free(d->fl);
+        free(d->damp); free(d->y); free(d->fr); free(d->fl); free(d->nt); free(d->ob); free(d->obr);
         if (d->drv) gsl_odeiv2_driver_free(d->drv);
         free(d);
     }
@@ -37,17 +37,30 @@ static int rhs(double t, const double y[], double dydt[], void *params)
     gal_reduced_force(d->rm, eta, d->fr);
     memset(d->fl, 0, (size_t)r * sizeof(double));
     if (d->load.eval) {
+        if (d->obs_offset >= 0) gal_reduced_observe_rate(d->rm, eta, deta, d->ob, d->obr);
         for (int q = 0; q < d->nqp; q++) {
             const double *P = d->phr + (size_t)q * r * 3, *Ps = d->phs + (size_t)q * r * 3, *Pt = d->pht + (size_t)q * r;
             double pos[3], vel[3] = {0, 0, 0}, rs[3], th = 0;
             for (int k = 0; k < 3; k++) pos[k] = d->req[3 * q + k], rs[k] = d->teq[3 * q + k];
-            for (int i = 0; i < r; i++) {
+            if (d->obs_offset >= 0) {
+                /* the expansion: the condensed motion (stretching, the rise of a swinging span)
+                 * moves the points too */
+                const double *o = d->ob + d->obs_offset + 7 * q, *orate = d->obr + d->obs_offset + 7 * q;
                 for (int k = 0; k < 3; k++) {
-                    pos[k] += P[3 * i + k] * eta[i];
-                    vel[k] += P[3 * i + k] * deta[i];
-                    rs[k] += Ps[3 * i + k] * eta[i];
+                    pos[k] += o[k];
+                    vel[k] = orate[k];
+                    rs[k] += o[3 + k] / d->nt[q];
                 }
-                th += Pt[i] * eta[i];
+                th = o[6];
+            } else {
+                for (int i = 0; i < r; i++) {
+                    for (int k = 0; k < 3; k++) {
+                        pos[k] += P[3 * i + k] * eta[i];
+                        vel[k] += P[3 * i + k] * deta[i];
+                        rs[k] += Ps[3 * i + k] * eta[i];
+                    }
+                    th += Pt[i] * eta[i];
+                }
             }
             /* tangent and reference director: the equilibrium director carried by the minimal
              * rotation to the current tangent, turned by the twist */
@@ -77,8 +90,28 @@ static int rhs(double t, const double y[], double dydt[], void *params)
     return GSL_SUCCESS;
 }
 
+/* The quadrature: Gauss-Legendre, 2 points on each of nqp/2 equal segments of the unstretched
+ * length; s_q and the element holding it. */
+static void quad_point(const gal_rod *rod, int nqp, int q, int *e, double *xi, double *w, int *e0, int *e1, double *w1)
+{
+    int nel = rod->p.elements, nseg = nqp / 2;
+    double L0 = rod->p.unstretched_length, l0 = L0 / nel;
+    double gx = (q % 2) ? 0.5 + 0.5 / sqrt(3.0) : 0.5 - 0.5 / sqrt(3.0);
+    double s = (q / 2 + gx) * L0 / nseg;
+    *w = 0.5 * L0 / nseg;
+    *e = (int)(s / l0);
+    if (*e > nel - 1) *e = nel - 1;
+    *xi = s / l0 - *e;
+    double se = s / l0 - 0.5;
+    *e0 = (int)floor(se);
+    *w1 = se - *e0;
+    if (*e0 < 0) *e0 = 0, *w1 = 0;
+    if (*e0 >= nel - 1) *e0 = nel - 1, *w1 = 0;
+    *e1 = *e0 + 1 < nel ? *e0 + 1 : *e0;
+}
+
 gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, double ra,
-                         double rb, const gal_pointload *load, int nqp, double tol, double h0)
+                         double rb, const gal_pointload *load, int nqp, double tol, double h0, int obs_offset)
 {
     gal_rdyn *d = calloc(1, sizeof *d);
     if (!d) return NULL;
@@ -96,6 +129,17 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
     d->y = calloc((size_t)2 * r, sizeof(double));
     d->fr = malloc((size_t)r * sizeof(double));
     d->fl = malloc((size_t)r * sizeof(double));
+    d->nt = malloc((size_t)nqp * sizeof(double));
+    d->obs_offset = obs_offset;
+    if (obs_offset >= 0) {
+        if (obs_offset + 7 * nqp > rm->nobs) {
+            gal_error(GAL_EINPUT, "reduced model: %d observations, the quadrature needs %d from %d", rm->nobs, 7 * nqp, obs_offset);
+            return gal_rdyn_free(d);
+        }
+        d->ob = malloc((size_t)rm->nobs * sizeof(double));
+        d->obr = malloc((size_t)rm->nobs * sizeof(double));
+        if (!d->ob || !d->obr) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return gal_rdyn_free(d); }
+    }
     double *full = calloc((size_t)rod->nq * r, sizeof(double));
     if (!d->wq || !d->req || !d->teq || !d->aeq || !d->phr || !d->phs || !d->pht || !d->damp || !d->y ||
         !d->fr || !d->fl || !full) {
@@ -107,18 +151,12 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
         d->damp[i] = ra + rb * rm->omega2[i];
         for (int j = 0; j < n; j++) full[(size_t)i * rod->nq + rod->free_q[j]] = rm->phi[(size_t)i * n + j];
     }
-    /* Gauss-Legendre, 2 points on each of nqp/2 equal segments of the unstretched length */
-    double L0 = rod->p.unstretched_length, l0 = L0 / nel;
-    int nseg = nqp / 2;
-    double gx[2] = {0.5 - 0.5 / sqrt(3.0), 0.5 + 0.5 / sqrt(3.0)};
-    for (int sgi = 0; sgi < nseg; sgi++)
-        for (int g = 0; g < 2; g++) {
-            int q = 2 * sgi + g;
-            double s = (sgi + gx[g]) * L0 / nseg;
-            d->wq[q] = 0.5 * L0 / nseg;
-            int e = (int)(s / l0);
-            if (e > nel - 1) e = nel - 1;
-            double xi = s / l0 - e;
+    double l0 = rod->p.unstretched_length / nel;
+    for (int q = 0; q < nqp; q++) {
+        {
+            int e, e0, e1;
+            double xi, w1;
+            quad_point(rod, nqp, q, &e, &xi, &d->wq[q], &e0, &e1, &w1);
             for (int k = 0; k < 3; k++) {
                 d->req[3 * q + k] = (1 - xi) * q_eq[3 * e + k] + xi * q_eq[3 * (e + 1) + k];
                 d->teq[3 * q + k] = (q_eq[3 * (e + 1) + k] - q_eq[3 * e + k]) / l0; /* dr/ds */
@@ -130,14 +168,9 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
             /* keep teq as the unit tangent for the frame transport and rs as dr/ds: since
              * |dr/ds| differs from 1 only by the strain, normalize */
             double nt = sqrt(dot(d->teq + 3 * q, d->teq + 3 * q));
+            d->nt[q] = nt;
             for (int k = 0; k < 3; k++) d->teq[3 * q + k] /= nt;
-            /* twist at s: piecewise linear between edge centres */
-            double se = s / l0 - 0.5;
-            int e0 = (int)floor(se);
-            double w1 = se - e0;
-            if (e0 < 0) e0 = 0, w1 = 0;
-            if (e0 >= nel - 1) e0 = nel - 1, w1 = 0;
-            int e1 = e0 + 1 < nel ? e0 + 1 : e0;
+            /* twist at s: piecewise linear between edge centres (e0, e1, w1) */
             for (int i = 0; i < r; i++) {
                 const double *F = full + (size_t)i * rod->nq;
                 for (int k = 0; k < 3; k++) {
@@ -148,6 +181,7 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
                     d->pht[(size_t)q * r + i] = (1 - w1) * F[3 * nn + e0] + w1 * F[3 * nn + e1];
             }
         }
+    }
     free(full);
     d->sys.function = rhs;
     d->sys.jacobian = NULL;
@@ -167,6 +201,23 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
     }
     gsl_odeiv2_driver_set_hmin(d->drv, 1e-10);
     return d;
+}
+
+void gal_rdyn_quadrature_obs(const gal_rod *rod, int nqp, gal_obs *obs)
+{
+    double l0 = rod->p.unstretched_length / rod->p.elements;
+    for (int q = 0; q < nqp; q++) {
+        int e, e0, e1;
+        double xi, w, w1;
+        quad_point(rod, nqp, q, &e, &xi, &w, &e0, &e1, &w1);
+        gal_obs *o = obs + 7 * q;
+        for (int k = 0; k < 3; k++) {
+            o[k] = (gal_obs){{3 * e + k, 3 * (e + 1) + k}, {1 - xi, xi}};
+            o[3 + k] = (gal_obs){{3 * e + k, 3 * (e + 1) + k}, {-1 / l0, 1 / l0}};
+        }
+        if (rod->p.torsion) o[6] = (gal_obs){{3 * rod->nn + e0, 3 * rod->nn + e1}, {1 - w1, w1}};
+        else o[6] = (gal_obs){{-1, -1}, {0, 0}};
+    }
 }
 
 int gal_rdyn_advance(gal_rdyn *d, double t_target)

@@ -25,7 +25,7 @@ gal_reduced *gal_reduced_free(gal_reduced *rm)
     if (rm) {
         free(rm->phi); free(rm->omega2); free(rm->mode_index); free(rm->family);
         free(rm->m2); free(rm->m3); free(rm->B); free(rm->A); free(rm->P); free(rm->eta_ref);
-        free(rm->obs_q); free(rm->obs_lin); free(rm->obs_nl);
+        free(rm->obs); free(rm->obs_lin); free(rm->obs_nl);
         free(rm);
     }
     return NULL;
@@ -79,6 +79,39 @@ void gal_reduced_observe(const gal_reduced *rm, const double *eta, double *out)
         out[o] = u;
     }
     if (mup != mu) free(mup);
+}
+
+void gal_reduced_observe_rate(const gal_reduced *rm, const double *eta, const double *deta, double *out,
+                              double *rate)
+{
+    int r = rm->r, nc = rm->n2 + rm->n3 + 2 * r;
+    double buf[2 * 4096];
+    double *mu = nc <= 4096 ? buf : malloc((size_t)2 * nc * sizeof(double)), *dmu = mu + nc;
+    if (!mu) return;
+    monomials(rm, eta, mu);
+    /* d/dt of each monomial */
+    for (int m = 0; m < rm->n2; m++) {
+        int j = rm->m2[2 * m], k = rm->m2[2 * m + 1];
+        dmu[m] = deta[j] * eta[k] + eta[j] * deta[k];
+    }
+    for (int m = 0; m < rm->n3; m++) {
+        int j = rm->m3[3 * m], k = rm->m3[3 * m + 1], l = rm->m3[3 * m + 2];
+        dmu[rm->n2 + m] = deta[j] * eta[k] * eta[l] + eta[j] * deta[k] * eta[l] + eta[j] * eta[k] * deta[l];
+    }
+    for (int j = 0; j < r; j++) {
+        double e2 = eta[j] * eta[j];
+        dmu[rm->n2 + rm->n3 + j] = 4 * e2 * eta[j] * deta[j];
+        dmu[rm->n2 + rm->n3 + r + j] = 5 * e2 * e2 * deta[j];
+    }
+    for (int o = 0; o < rm->nobs; o++) {
+        const double *L = rm->obs_lin + (size_t)o * r, *C = rm->obs_nl + (size_t)o * nc;
+        double u = 0, du = 0;
+        for (int i = 0; i < r; i++) u += L[i] * eta[i], du += L[i] * deta[i];
+        for (int m = 0; m < nc; m++) u += C[m] * mu[m], du += C[m] * dmu[m];
+        out[o] = u;
+        if (rate) rate[o] = du;
+    }
+    if (mu != buf) free(mu);
 }
 
 int gal_reduced_projected_force(const gal_reduced *rm, const gal_rod *rod, const double *q_eq,
@@ -189,7 +222,7 @@ static int condense(gal_rod *rod, const double *q_eq, const gal_reduced *rm, kkt
 }
 
 gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
-                               int r, const int *obs_q, int nobs, const gal_reduced_opts *o_in)
+                               int r, const gal_obs *obs_in, int nobs, const gal_reduced_opts *o_in)
 {
     double t0 = gal_wall_time();
     gal_reduced_opts o;
@@ -217,11 +250,11 @@ gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes
     rm->P = calloc((size_t)r * 2 * r, sizeof(double));
     rm->eta_ref = malloc((size_t)r * sizeof(double));
     rm->nobs = nobs;
-    rm->obs_q = malloc((size_t)(nobs > 0 ? nobs : 1) * sizeof(int));
+    rm->obs = malloc((size_t)(nobs > 0 ? nobs : 1) * sizeof(gal_obs));
     rm->obs_lin = calloc((size_t)(nobs > 0 ? nobs : 1) * r, sizeof(double));
     rm->obs_nl = calloc((size_t)(nobs > 0 ? nobs : 1) * nc, sizeof(double));
     if (!rm->phi || !rm->omega2 || !rm->mode_index || !rm->family || !rm->m2 || !rm->m3 || !rm->B ||
-        !rm->A || !rm->P || !rm->eta_ref || !rm->obs_q || !rm->obs_lin || !rm->obs_nl) {
+        !rm->A || !rm->P || !rm->eta_ref || !rm->obs || !rm->obs_lin || !rm->obs_nl) {
         gal_error(GAL_ENOMEM, "reduced: out of memory");
         return gal_reduced_free(rm);
     }
@@ -254,9 +287,12 @@ gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes
                                                                               : o.amplitude_m / big_t;
     }
     for (int k = 0; k < nobs; k++) {
-        rm->obs_q[k] = obs_q[k];
-        int j = rod->dof[obs_q[k]];
-        for (int i = 0; i < r; i++) rm->obs_lin[k * r + i] = j >= 0 ? rm->phi[(size_t)i * n + j] : 0.0;
+        rm->obs[k] = obs_in[k];
+        for (int e = 0; e < 2; e++) {
+            int qi = obs_in[k].q[e], j = qi >= 0 ? rod->dof[qi] : -1;
+            if (j < 0) continue;
+            for (int i = 0; i < r; i++) rm->obs_lin[k * r + i] += obs_in[k].w[e] * rm->phi[(size_t)i * n + j];
+        }
     }
 
     /* ---- load cases (in units of the reference amplitudes) ---- */
@@ -321,20 +357,34 @@ gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes
         for (int c = 0; c < nc_cases && !st; c++) {
             const double *cs = cases + (size_t)c * r;
             double *fc = frc + (size_t)c * r, *ec = eta + (size_t)c * r;
-            memcpy(qc, q_eq, (size_t)nq * sizeof(double));
-            for (int i = 0; i < r; i++) ec[i] = cs[i] * rm->eta_ref[i], fc[i] = rm->omega2[i] * ec[i];
-            for (int j = 0; j < n; j++) {
-                double uj = 0;
-                for (int i = 0; i < r; i++) uj += rm->phi[(size_t)i * n + j] * ec[i];
-                qc[rod->free_q[j]] += uj; /* linear prediction */
+            /* a combination that folds or slackens the span at full amplitude is taken at a
+             * smaller one (the fit only needs the point where it was solved) */
+            for (double shrink = 1.0; ; shrink *= 0.7) {
+                memcpy(qc, q_eq, (size_t)nq * sizeof(double));
+                for (int i = 0; i < r; i++) ec[i] = shrink * cs[i] * rm->eta_ref[i], fc[i] = rm->omega2[i] * ec[i];
+                for (int j = 0; j < n; j++) {
+                    double uj = 0;
+                    for (int i = 0; i < r; i++) uj += rm->phi[(size_t)i * n + j] * ec[i];
+                    qc[rod->free_q[j]] += uj; /* linear prediction */
+                }
+                st = condense(rod, q_eq, rm, &w, ec, qc, fc, tol, &rm->newton_iterations);
+                if (st == GAL_OK) break;
+                if (st == GAL_ENOMEM || shrink < 0.2) {
+                    st = gal_error(st, "reduced: identification case %d of %d: %s (reduce "
+                                   "model.identification_amplitude)", c + 1, nc_cases, gal_error_message());
+                    break;
+                }
+                rm->shrunk_cases += shrink == 1.0;
             }
-            st = condense(rod, q_eq, rm, &w, ec, qc, fc, tol, &rm->newton_iterations);
-            if (st) {
-                st = gal_error(GAL_EFAIL, "reduced: load case %d of %d: %s (reduce the amplitude of the "
-                               "identification)", c + 1, nc_cases, gal_error_message());
-                break;
+            if (st) break;
+            for (int k = 0; k < nobs; k++) {
+                double v = 0;
+                for (int e = 0; e < 2; e++) {
+                    int qi = obs_in[k].q[e];
+                    if (qi >= 0) v += obs_in[k].w[e] * (qc[qi] - q_eq[qi]);
+                }
+                obs[(size_t)c * nobs + k] = v;
             }
-            for (int k = 0; k < nobs; k++) obs[(size_t)c * nobs + k] = qc[obs_q[k]] - q_eq[obs_q[k]];
         }
     }
     gal_chol_free(w.chol);

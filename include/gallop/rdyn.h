@@ -32,6 +32,10 @@ typedef struct gal_rdyn {
     double *phs;         /* nqp x r x 3: their derivative along s */
     double *pht;         /* nqp x r: twist */
     double *damp;        /* r: alpha + beta w^2 */
+    double *nt;          /* nqp: |dr/ds| at equilibrium */
+    int obs_offset;      /* >= 0: kinematics at the points from the model's expansion (7 observations
+                          * per point from this index on); -1: linear in the modes */
+    double *ob, *obr;    /* scratch: observations and their rates */
     gal_pointload load;
     double t;            /* s */
     double *y;           /* 2r: eta, eta' */
@@ -45,7 +49,10 @@ typedef struct gal_rdyn {
 
 gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, double rayleigh_mass,
                          double rayleigh_stiffness, const gal_pointload *load, int nqp, double rel_tol,
-                         double h0);
+                         double h0, int obs_offset);
+/* The observations at the nqp quadrature points that gal_rdyn uses when obs_offset >= 0: per
+ * point its displacement (3), slope d u / ds (3) and twist (1), 7 nqp in all. */
+void gal_rdyn_quadrature_obs(const gal_rod *rod, int nqp, gal_obs *obs);
 gal_rdyn *gal_rdyn_free(gal_rdyn *d);
 /* Integrate to t_target (adaptive steps). GAL_EFAIL with time and reason on failure (NaN, step
  * size underflow). */

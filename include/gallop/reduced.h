@@ -17,6 +17,13 @@
 #include "gallop/modes.h"
 #include "gallop/rod.h"
 
+/* An observed quantity: w[0] u[q[0]] + w[1] u[q[1]] of the displacement u = q - q_eq over the
+ * configuration (q[1] = -1: one entry). Positions and slopes between nodes are such. */
+typedef struct gal_obs {
+    int q[2];
+    double w[2];
+} gal_obs;
+
 typedef struct gal_reduced_opts {
     double amplitude_m;     /* m: largest translation of a load case (per mode) */
     double amplitude_rad;   /* rad: largest twist of a load case (torsional modes) */
@@ -36,12 +43,13 @@ typedef struct gal_reduced {
     double *A;              /* r x n3 */
     double *P;              /* r x 2r: coefficients of eta_j^4 (first r) and eta_j^5 (next r) */
     double *eta_ref;        /* r: modal amplitude of the load cases */
-    int nobs;               /* observed configuration entries */
-    int *obs_q;             /* nobs: their configuration indices */
+    int nobs;               /* observed quantities */
+    gal_obs *obs;           /* nobs */
     double *obs_lin;        /* nobs x r: Phi rows */
     double *obs_nl;         /* nobs x (n2 + n3 + 2 r): expansion coefficients */
     /* identification figures */
     int load_cases;
+    int shrunk_cases;       /* cases taken at a smaller amplitude (the span folded at the full one) */
     long newton_iterations;
     double fit_residual;    /* relative rms residual of the force fit */
     double build_time_s;
@@ -50,15 +58,17 @@ typedef struct gal_reduced {
 void gal_reduced_default_opts(gal_reduced_opts *o);
 
 /* Identify the model about the equilibrium q_eq on the modes of `md` with indices sel[0..r-1].
- * obs_q (nobs configuration indices) are the coordinates to be recovered by expansion. */
+ * obs (nobs) are the quantities to be recovered by expansion. */
 gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
-                               int r, const int *obs_q, int nobs, const gal_reduced_opts *o);
+                               int r, const gal_obs *obs, int nobs, const gal_reduced_opts *o);
 gal_reduced *gal_reduced_free(gal_reduced *rm);
 
 /* f(eta), the reduced restoring force (per unit modal mass). */
 void gal_reduced_force(const gal_reduced *rm, const double *eta, double *f);
-/* Observed coordinates (displacements from equilibrium) at eta: out[nobs]. */
+/* Observed quantities at eta: out[nobs]; and, when rate != NULL, their rates for eta' = deta. */
 void gal_reduced_observe(const gal_reduced *rm, const double *eta, double *out);
+void gal_reduced_observe_rate(const gal_reduced *rm, const double *eta, const double *deta, double *out,
+                              double *rate);
 /* The Galerkin projection on the same linear modes, Phi^T grad U(q_eq + Phi eta) (cost grows with
  * the elements; what the condensation corrects; for comparison). */
 int gal_reduced_projected_force(const gal_reduced *rm, const gal_rod *rod, const double *q_eq,
