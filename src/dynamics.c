@@ -8,6 +8,7 @@
 #include "gallop/dynamics.h"
 #include "gallop/core.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,7 +84,7 @@ gal_dyn *gal_dyn_alloc(const gal_rod *rod, const double *q0, const double *v0, c
     int nq = rod->nq, n = rod->ndof;
     size_t bq = (size_t)nq * sizeof(double), bn = (size_t)n * sizeof(double);
     d->q = malloc(bq), d->v = calloc(nq, sizeof(double)), d->a = calloc(nq, sizeof(double));
-    d->q1 = malloc(bq), d->v1 = malloc(bq), d->a1 = malloc(bq);
+    d->q1 = malloc(bq), d->v1 = calloc(nq, sizeof(double)), d->a1 = calloc(nq, sizeof(double)); /* fixed dofs stay 0 */
     d->fint0 = malloc(bq), d->fint1 = malloc(bq), d->fext0 = malloc(bq), d->fext1 = malloc(bq);
     d->mdiag = malloc(bn), d->r = malloc(bn), d->dq = malloc(bn), d->tmp = malloc(bn), d->Cv = malloc(bn);
     d->K0 = gal_csc_clone(rod->K);
@@ -142,6 +143,10 @@ static int try_step(gal_dyn *d, double h)
     for (int j = 0; j < n; j++) scale = fmax(scale, fabs(d->fint0[rod->free_q[j]]) + fabs(d->fext0[rod->free_q[j]]));
     /* a force scale for the convergence test: the weight of one node at least */
     for (int j = 0; j < n; j++) scale = fmax(scale, d->mdiag[j] * 9.81);
+    /* not below the round-off of the elastic forces: positions known to eps L, times the axial
+     * stiffness of an element EA / l0 */
+    double tol = fmax(d->o.newton_tol * scale, 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) *
+                                                   rod->p.EA / rod->l0[0]);
     for (int it = 0; it < d->o.max_newton; it++) {
         /* a1, v1 from q1 */
         for (int j = 0; j < n; j++) {
@@ -179,7 +184,7 @@ static int try_step(gal_dyn *d, double h)
             return gal_error(GAL_EFAIL, "dynamics: the residual is not finite at t = %.6g s (step %ld, "
                              "Newton iteration %d): elastic or aerodynamic force", t1, d->steps + 1, it);
         d->newton_iterations++;
-        if (rn <= d->o.newton_tol * scale && it > 0) {
+        if (rn <= tol && it > 0) {
             /* accept */
             memcpy(d->q, d->q1, (size_t)nq * sizeof(double));
             memcpy(d->v, d->v1, (size_t)nq * sizeof(double));
