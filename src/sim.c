@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "gallop/wind.h"
+#include "gallop/windfield.h"
 
 void gal_sim_result_clear(gal_sim_result *res)
 {
@@ -46,19 +47,11 @@ static int wind_field(gal_sim_setup *s)
 {
     const gal_scene *sc = s->sc;
     gal_wind_params wp;
-    gal_wind_params_default(&wp);
-    wp.speed = sc->wind.speed;
-    wp.intensity = sc->wind.intensity;
-    wp.spectrum = (gal_wind_spectrum)sc->wind.turbulence;
-    wp.coherence_decay = sc->wind.coherence_decay;
-    wp.points = 65;
-    wp.spacing = sc->span.length / 64;
-    wp.time_step = 0.05;
-    wp.duration = sc->simulation.duration + 1.0;
-    wp.seed = (unsigned long)sc->wind.seed;
+    int st = gal_windfield_params(sc, &wp); /* the same field as `gallop wind` */
+    if (st) return st;
     gal_wind *w = gal_wind_alloc(&wp);
     if (!w) return gal_error(GAL_EINPUT, "%s: [wind]: %s", sc->path, gal_error_message());
-    int st = gal_wind_generate(w);
+    st = gal_wind_generate(w);
     if (st) { gal_wind_free(w); return st; }
     int nx = gal_wind_points(w), nt = gal_wind_samples(w);
     s->wind_u = malloc((size_t)nx * nt * sizeof(double));
