@@ -11,7 +11,7 @@ gal_rdyn *gal_rdyn_free(gal_rdyn *d)
 {
     if (d) {
         free(d->wq); free(d->req); free(d->teq); free(d->aeq); free(d->phr); free(d->phs); free(d->pht);
-        free(d->damp); free(d->y); free(d->fr); free(d->fl); free(d->nt); free(d->ob); free(d->obr);
+        free(d->damp); free(d->y); free(d->fr); free(d->fl); free(d->nt); free(d->ob); free(d->obr); free(d->y_prev);
         if (d->drv) gsl_odeiv2_driver_free(d->drv);
         free(d);
     }
@@ -127,6 +127,7 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
     d->pht = calloc((size_t)nqp * r, sizeof(double));
     d->damp = malloc((size_t)r * sizeof(double));
     d->y = calloc((size_t)2 * r, sizeof(double));
+    d->y_prev = calloc((size_t)2 * r, sizeof(double));
     d->fr = malloc((size_t)r * sizeof(double));
     d->fl = malloc((size_t)r * sizeof(double));
     d->nt = malloc((size_t)nqp * sizeof(double));
@@ -141,7 +142,7 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
         if (!d->ob || !d->obr) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return gal_rdyn_free(d); }
     }
     double *full = calloc((size_t)rod->nq * r, sizeof(double));
-    if (!d->wq || !d->req || !d->teq || !d->aeq || !d->phr || !d->phs || !d->pht || !d->damp || !d->y ||
+    if (!d->wq || !d->req || !d->teq || !d->aeq || !d->phr || !d->phs || !d->pht || !d->damp || !d->y || !d->y_prev ||
         !d->fr || !d->fl || !full) {
         free(full);
         gal_error(GAL_ENOMEM, "reduced model: out of memory");
@@ -228,6 +229,40 @@ int gal_rdyn_advance(gal_rdyn *d, double t_target)
         if (d->status != GAL_OK) return d->status;
         return gal_error(GAL_EFAIL, "reduced model: the integrator failed at t = %.6g s (GSL status %d: %s)",
                          d->t, st, gsl_strerror(st));
+    }
+    return GAL_OK;
+}
+
+int gal_rdyn_sample(gal_rdyn *d, double t_out, double t_end, double *y_out)
+{
+    int r = d->r;
+    d->status = GAL_OK;
+    if (d->t == 0 && d->t_prev == 0) memcpy(d->y_prev, d->y, (size_t)2 * r * sizeof(double));
+    while (d->t < t_out) {
+        d->t_prev = d->t;
+        memcpy(d->y_prev, d->y, (size_t)2 * r * sizeof(double));
+        int st = gsl_odeiv2_evolve_apply(d->drv->e, d->drv->c, d->drv->s, &d->sys, &d->t, t_end, &d->drv->h, d->y);
+        if (st != GSL_SUCCESS || !(d->t > d->t_prev)) {
+            if (d->status != GAL_OK) return d->status;
+            return gal_error(GAL_EFAIL, "reduced model: the integrator failed at t = %.6g s (GSL status %d: %s)",
+                             d->t, st, gsl_strerror(st));
+        }
+        if (d->drv->h < 1e-10)
+            return gal_error(GAL_EFAIL, "reduced model: the step size fell to %.3g s at t = %.6g s", d->drv->h, d->t);
+    }
+    double h = d->t - d->t_prev;
+    if (h <= 0) {
+        memcpy(y_out, d->y, (size_t)2 * r * sizeof(double));
+        return GAL_OK;
+    }
+    /* cubic Hermite on [t_prev, t] for eta with eta' as slopes; eta' from its derivative */
+    double s = (t_out - d->t_prev) / h, s2 = s * s, s3 = s2 * s;
+    double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+    double d00 = (6 * s2 - 6 * s) / h, d10 = 3 * s2 - 4 * s + 1, d01 = (-6 * s2 + 6 * s) / h, d11 = 3 * s2 - 2 * s;
+    for (int i = 0; i < r; i++) {
+        double p0 = d->y_prev[i], m0 = d->y_prev[r + i], p1 = d->y[i], m1 = d->y[r + i];
+        y_out[i] = h00 * p0 + h10 * h * m0 + h01 * p1 + h11 * h * m1;
+        y_out[r + i] = d00 * p0 + d10 * m0 + d01 * p1 + d11 * m1;
     }
     return GAL_OK;
 }

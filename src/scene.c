@@ -815,7 +815,7 @@ static void defaults(gal_scene *sc)
     sc->simulation.wind_reverse_time = 0;
     sc->simulation.output_interval = 0;
     sc->simulation.rho_inf = 0.9;
-    sc->simulation.tolerance = 1e-7;
+    sc->simulation.tolerance = 1e-6;
     sc->model.identification_amplitude = 0;
     sc->model.identification_twist = 30 * DEG;
     sc->simulation.nprobes = 1;

@@ -27,10 +27,40 @@ int gal_sim_measure(const gal_sim_result *r, int k, double from, gal_sim_measure
     double *x = malloc((size_t)n * sizeof(double)), *env = malloc((size_t)n * sizeof(double));
     if (!x || !env) { free(x); free(env); return gal_error(GAL_ENOMEM, "out of memory"); }
     int st = GAL_OK;
-    /* time to steady galloping from the envelope of the vertical displacement */
+    /* time to steady galloping from the envelope of the vertical displacement, its slow part (the
+     * mean lift and drag change as the motion grows) removed by a running mean over one period of
+     * the dominant frequency of the second half */
     column(r, k, 1, 0, x);
+    double level = 0, ts = NAN, fdom = NAN;
+    {
+        long h0 = n / 2;
+        gal_welch *w0 = gal_spectrum_welch_alloc(gal_spectrum_segment_choose((size_t)(n - h0)));
+        gal_measures g0;
+        if (w0 && gal_spectrum_measure(w0, x + h0, (size_t)(n - h0), dt, 1, NULL, &g0) == GAL_OK) fdom = g0.frequency;
+        gal_spectrum_welch_free(w0);
+    }
+    if (isfinite(fdom) && fdom > 0) {
+        long wlen = (long)floor(1.0 / (fdom * dt) + 0.5);
+        if (wlen >= 2 && wlen < n / 4) {
+            /* centred running mean by a prefix sum (env is scratch) */
+            double acc = 0;
+            env[0] = 0;
+            for (long i = 0; i < n; i++) acc += x[i], env[i] = acc;
+            double *y = malloc((size_t)n * sizeof(double));
+            if (y) {
+                for (long i = 0; i < n; i++) {
+                    long a = i - wlen / 2, b = a + wlen - 1;
+                    if (a < 0) a = 0, b = wlen - 1;
+                    if (b > n - 1) b = n - 1, a = n - wlen;
+                    double sum = env[b] - (a > 0 ? env[a - 1] : 0);
+                    y[i] = x[i] - sum / wlen;
+                }
+                memcpy(x, y, (size_t)n * sizeof(double));
+                free(y);
+            }
+        }
+    }
     gal_hilbert *h = gal_spectrum_hilbert_alloc((size_t)n);
-    double level = 0, ts = NAN;
     if (h && gal_spectrum_envelope(h, x, 2.0, env) == GAL_OK) gal_spectrum_steady_time(env, (size_t)n, dt, 0.05, &ts, &level);
     gal_spectrum_hilbert_free(h);
     m->time_to_steady_s = ts;

@@ -39,6 +39,8 @@ typedef struct gal_rdyn {
     gal_pointload load;
     double t;            /* s */
     double *y;           /* 2r: eta, eta' */
+    double t_prev;       /* s: the step before (gal_rdyn_sample) */
+    double *y_prev;      /* 2r */
     double *fr, *fl;     /* scratch */
     gsl_odeiv2_system sys;
     gsl_odeiv2_driver *drv;
@@ -57,6 +59,10 @@ gal_rdyn *gal_rdyn_free(gal_rdyn *d);
 /* Integrate to t_target (adaptive steps). GAL_EFAIL with time and reason on failure (NaN, step
  * size underflow). */
 int gal_rdyn_advance(gal_rdyn *d, double t_target);
+/* The state at t_out (>= the last sample) by natural adaptive steps towards t_end and cubic
+ * Hermite interpolation (eta and eta' at both ends of the step that holds t_out): outputs at any
+ * rate cost no extra steps. y_out has 2r entries. */
+int gal_rdyn_sample(gal_rdyn *d, double t_out, double t_end, double *y_out);
 /* Steps taken and rejected by the adaptive control. */
 void gal_rdyn_counts(const gal_rdyn *d, long *steps, long *rejected);
 
