@@ -350,32 +350,39 @@ static int study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resul
     int st = gal_sim_setup_init(&su, &s, 1);
     if (st) { gal_sim_setup_clear(&su); return gal_error(st, "%s: set-up: %s", gal_acc_study_names[which], gal_error_message()); }
     dyn_out d[8];
-    int ok[8];
-    /* the reference (the last value) first, for its steady window */
-    for (int k = 0; k < nv; k++) {
-        int i = (k + nv - 1) % nv;
+    int ok[8], ref = -1;
+    /* from the finest setting down: the finest that runs is the reference (the requested one
+     * unless it fails, which the summary then says), measured first for its steady window */
+    for (int i = nv - 1; i >= 0; i--) {
         if (full) s.simulation.time_step = T / div[i];
         else s.simulation.tolerance = tol[i];
         gal_sim_result res;
         ok[i] = !gal_sim_run(&su, full ? GAL_MODEL_FULL : GAL_MODEL_REDUCED, &res) &&
-                !dyn_measure(&res, k == 0 ? -1 : d[nv - 1].from, &d[i]);
+                !dyn_measure(&res, ref < 0 ? -1 : d[ref].from, &d[i]);
         gal_sim_result_clear(&res);
-        if (k == 0 && !ok[i]) {
-            gal_sim_setup_clear(&su);
-            return gal_error(GAL_EFAIL, "%s: the reference run: %s", gal_acc_study_names[which], gal_error_message());
+        if (!ok[i]) {
+            if (o->progress) fprintf(stderr, "accuracy: %s run %d failed: %s\n", gal_acc_study_names[which], i, gal_error_message());
+            if (i == nv - 1)
+                snprintf(S->note, sizeof S->note, "the requested reference %s = %.3g failed (%s); the finest setting "
+                         "that ran is the reference", full ? "simulation.time_step" : "simulation.tolerance",
+                         full ? T / div[i] : tol[i], gal_error_message());
+            continue;
         }
-        if (!ok[i] && o->progress) fprintf(stderr, "accuracy: %s run %d failed: %s\n", gal_acc_study_names[which], i, gal_error_message());
-        if (k == 0) S->steady_from_s = d[i].from;
-        else if (o->progress) fprintf(stderr, "accuracy: %-9s %d of %d runs done\n", gal_acc_study_names[which], k + 1, nv);
+        if (ref < 0) ref = i, S->steady_from_s = d[i].from;
+        if (o->progress) fprintf(stderr, "accuracy: %-9s %d of %d runs done\n", gal_acc_study_names[which], nv - i, nv);
+    }
+    if (ref < 0) {
+        gal_sim_setup_clear(&su);
+        return gal_error(GAL_EFAIL, "%s: no run succeeded: %s", gal_acc_study_names[which], gal_error_message());
     }
     gal_sim_setup_clear(&su);
     for (int i = 0; i < nv; i++) {
         gal_acc_row *w = full ? row_add(r, which, "simulation.time_step", "%.6g", T / div[i])
                               : row_add(r, which, "simulation.tolerance", "%.0e", tol[i]);
         if (!w) return gal_error(GAL_ENOMEM, "out of memory");
-        if (ok[i]) dyn_fill(w, &d[i], &d[nv - 1]);
+        if (ok[i]) dyn_fill(w, &d[i], &d[ref]);
         else w->error = INFINITY;
-        w->reference = i == nv - 1;
+        w->reference = i == ref;
         progress(o, w);
     }
     return GAL_OK;
@@ -613,6 +620,7 @@ int gal_accuracy_write(const char *dir, const gal_scene *sc, const gal_acc_resul
                 gal_json_num(&j, NAN);
             }
             gal_json_kv_str(&j, "buys", S->buys);
+            if (S->note[0]) gal_json_kv_str(&j, "note", S->note);
             if (isfinite(S->steady_from_s)) gal_json_kv_num(&j, "steady_from_s", S->steady_from_s);
             if (isfinite(S->output_interval_s)) gal_json_kv_num(&j, "output_interval_s", S->output_interval_s);
             gal_json_key(&j, "rows");
@@ -642,7 +650,10 @@ void gal_accuracy_print(FILE *fp, const gal_acc_result *r)
     }
     fprintf(fp, "\ntolerance %.3g%%\n", 100 * r->tolerance);
     for (int s = 0; s < GAL_ACC_NSTUDY; s++)
-        if (r->study[s].ran) fprintf(fp, "%-10s %s\n", gal_acc_study_names[s], r->study[s].buys);
+        if (r->study[s].ran) {
+            fprintf(fp, "%-10s %s\n", gal_acc_study_names[s], r->study[s].buys);
+            if (r->study[s].note[0]) fprintf(fp, "%-10s note: %s\n", "", r->study[s].note);
+        }
     if (isfinite(r->string_hz))
         fprintf(fp, "string theory: first out-of-plane frequency %.6g Hz (errors of each mesh in summary.json)\n",
                 r->string_hz);

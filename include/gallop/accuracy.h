@@ -55,6 +55,7 @@ typedef struct gal_acc_summary {
     double steady_from_s; /* dynamic studies: start of the steady window (the reference's), s */
     double output_interval_s; /* dynamic studies: trace sampling, s */
     char buys[512];       /* a sentence saying what the chosen setting buys */
+    char note[512];       /* what went wrong on the way (a requested reference that failed), or "" */
 } gal_acc_summary;
 
 typedef struct gal_acc_result {
