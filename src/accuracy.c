@@ -195,6 +195,7 @@ static int study_elements(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
             s.model.elements = v[i];
             if (mesh_timed(&s, o->repeats, &m)) {
                 if (o->progress) fprintf(stderr, "accuracy: %d elements failed: %s\n", v[i], gal_error_message());
+                snprintf(w->failed, sizeof w->failed, "%s", gal_error_message());
                 mesh_clear(&m);
                 w->error = INFINITY;
                 progress(o, w);
@@ -273,6 +274,7 @@ static void dyn_fill(gal_acc_row *w, const dyn_out *d, const dyn_out *ref)
 static void dyn_failed(const gal_acc_opts *o, gal_acc_row *w)
 {
     if (o->progress) fprintf(stderr, "accuracy: %s = %s failed: %s\n", w->setting, w->value, gal_error_message());
+    snprintf(w->failed, sizeof w->failed, "%s", gal_error_message());
     w->error = INFINITY;
 }
 
@@ -351,6 +353,7 @@ static int study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resul
     if (st) { gal_sim_setup_clear(&su); return gal_error(st, "%s: set-up: %s", gal_acc_study_names[which], gal_error_message()); }
     dyn_out d[8];
     int ok[8], ref = -1;
+    char why[8][256];
     /* from the finest setting down: the finest that runs is the reference (the requested one
      * unless it fails, which the summary then says), measured first for its steady window */
     for (int i = nv - 1; i >= 0; i--) {
@@ -361,6 +364,7 @@ static int study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resul
                 !dyn_measure(&res, ref < 0 ? -1 : d[ref].from, &d[i]);
         gal_sim_result_clear(&res);
         if (!ok[i]) {
+            snprintf(why[i], sizeof why[i], "%s", gal_error_message());
             if (o->progress) fprintf(stderr, "accuracy: %s run %d failed: %s\n", gal_acc_study_names[which], i, gal_error_message());
             if (i == nv - 1)
                 snprintf(S->note, sizeof S->note, "the requested reference %s = %.3g failed (%s); the finest setting "
@@ -381,7 +385,7 @@ static int study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resul
                               : row_add(r, which, "simulation.tolerance", "%.0e", tol[i]);
         if (!w) return gal_error(GAL_ENOMEM, "out of memory");
         if (ok[i]) dyn_fill(w, &d[i], &d[ref]);
-        else w->error = INFINITY;
+        else w->error = INFINITY, snprintf(w->failed, sizeof w->failed, "%s", why[i]);
         w->reference = i == ref;
         progress(o, w);
     }
@@ -556,6 +560,7 @@ static void json_row(gal_json *j, const gal_acc_row *w)
         gal_json_kv_num(j, "vertical_peak_to_peak_m", w->amplitude_m);
         gal_json_kv_num(j, "vertical_frequency_hz", w->frequency_hz);
     }
+    if (w->failed[0]) gal_json_kv_str(j, "failed", w->failed);
     gal_json_kv_int(j, "reference", w->reference);
     gal_json_kv_int(j, "chosen", w->chosen);
     gal_json_obj_end(j);
@@ -646,7 +651,7 @@ void gal_accuracy_print(FILE *fp, const gal_acc_result *r)
         const gal_acc_row *w = r->row + i;
         fprintf(fp, "%-10s %-22s %-10s %12.4g %12.4g %12.4g  %s\n", gal_acc_study_names[w->study], w->setting,
                 w->value, 100 * w->error, w->wall_time_s, w->build_time_s,
-                w->chosen ? "<- chosen" : w->reference ? "(reference)" : "");
+                w->chosen ? "<- chosen" : w->reference ? "(reference)" : w->failed[0] ? "(failed: see summary.json)" : "");
     }
     fprintf(fp, "\ntolerance %.3g%%\n", 100 * r->tolerance);
     for (int s = 0; s < GAL_ACC_NSTUDY; s++)

@@ -46,6 +46,7 @@ typedef struct gal_acc_row {
                            * against n/(2L) sqrt(H/m) (n = 1); NaN otherwise */
     double frequency_hz;  /* elements: first selected mode; dynamic: dominant vertical */
     double amplitude_m;   /* dynamic: vertical peak-to-peak at mid-span */
+    char failed[256];     /* why the setting failed (error = +inf), or "" */
 } gal_acc_row;
 
 typedef struct gal_acc_summary {
