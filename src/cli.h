@@ -12,7 +12,9 @@ int gal_cli_modes(int argc, char **argv);
 int gal_cli_simulate(int argc, char **argv);
 int gal_cli_compare(int argc, char **argv);
 int gal_cli_spectrum(int argc, char **argv);
-int gal_cli_stability(int argc, char **argv); int gal_cli_wind(int argc, char **argv);
+int gal_cli_stability(int argc, char **argv);
+int gal_cli_wind(int argc, char **argv);
+int gal_cli_accuracy(int argc, char **argv);
 
 /* ---- shared by the sub-commands (src/cli_common.c) ---- */
 struct gal_scene;

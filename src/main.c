@@ -18,6 +18,8 @@ static const struct {
     {"compare", gal_cli_compare, "gallop compare SCENE [-o DIR] [--set s.k=v ...]\n"
                                  "                                         full against reduced, same wind"},
     {"stability", gal_cli_stability, "gallop stability SCENE [-o DIR] [--set s.k=v ...]\n                                         Den Hartog criterion and onset wind speeds"}, {"wind", gal_cli_wind, "gallop wind SCENE [--points N] [-o DIR] [--set s.k=v ...]\n                                         the scene's turbulent wind field"},
+    {"accuracy", gal_cli_accuracy, "gallop accuracy SCENE [-o DIR] [--set s.k=v ...] [--tolerance E] [--study NAME ...]\n"
+                                   "                                         what accuracy costs in time: accuracy.csv, summary.json"},
     {"version", gal_cli_version, "gallop version                         print the version"},
     {"check", gal_cli_check, "gallop check SCENE [--set s.k=v ...]   parse and print the resolved scene"},
     {"spectrum", gal_cli_spectrum, "gallop spectrum TRACE.csv [--column NAME]... [--pair Y,Z]... [--from T] [--segment N] [-o DIR]\n"
