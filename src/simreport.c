@@ -61,7 +61,15 @@ int gal_sim_measure(const gal_sim_result *r, int k, double from, gal_sim_measure
         }
     }
     gal_hilbert *h = gal_spectrum_hilbert_alloc((size_t)n);
-    if (h && gal_spectrum_envelope(h, x, 2.0, env) == GAL_OK) gal_spectrum_steady_time(env, (size_t)n, dt, 0.05, &ts, &level);
+    m->rise_time_s = NAN;
+    if (h && gal_spectrum_envelope(h, x, 2.0, env) == GAL_OK) {
+        gal_spectrum_steady_time(env, (size_t)n, dt, 0.05, &ts, &level);
+        /* first time the envelope reaches 90% of its final level: robust to a final level that
+         * still breathes by a few per cent */
+        if (level > 0)
+            for (long i = 0; i < n; i++)
+                if (env[i] >= 0.9 * level) { m->rise_time_s = i * dt; break; }
+    }
     gal_spectrum_hilbert_free(h);
     m->time_to_steady_s = ts;
     /* the steady part: after `from` when given, else after the time to steady, but at least the
@@ -116,6 +124,7 @@ int gal_sim_mid_probe(const gal_sim_result *r)
 static void json_measures(gal_json *j, const gal_sim_measures *m)
 {
     gal_json_kv_num(j, "time_to_steady_s", m->time_to_steady_s);
+    gal_json_kv_num(j, "rise_time_90_s", m->rise_time_s);
     gal_json_kv_num(j, "steady_from_s", m->steady_from_s);
     for (int c = 0; c < 4; c++) {
         gal_json_key(j, comp_names[c]);
@@ -155,6 +164,7 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     gal_json_obj_end(j);
     gal_json_kv_num(j, "twist_amplitude_deg", mid->peak_to_peak[3]);
     gal_json_kv_num(j, "time_to_steady_s", mid->time_to_steady_s);
+    gal_json_kv_num(j, "rise_time_90_s", mid->rise_time_s);
     gal_json_kv_num(j, "tension_min_n", mid->tension_min);
     gal_json_kv_num(j, "tension_max_n", mid->tension_max);
     gal_json_key(j, "counters");

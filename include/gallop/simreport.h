@@ -7,7 +7,8 @@
 #include "gallop/sim.h"
 
 typedef struct gal_sim_measures {
-    double time_to_steady_s;      /* vertical envelope within 5% of its final level */
+    double time_to_steady_s;      /* vertical envelope within 5% of its final level from then on */
+    double rise_time_s;           /* vertical envelope first at 90% of its final level */
     double steady_from_s;         /* start of the window the measures are taken over */
     double frequency_hz[4];       /* horizontal, vertical, along, twist */
     double peak_to_peak[4];       /* m, m, m, deg */
