@@ -1,0 +1,72 @@
+/* bench_sim.c: cost of the galloping runs of data/scenes/iced_gallop.ini (issues 5, 6, 7):
+ * the full model's wall time per simulated second at 100 and 400 elements (60 s of the run, median
+ * of 3), the reduced model's at 100 and 1000 elements (the whole 500 s run, median of 3; its
+ * identification time apart), and the speedup of reduced over full at 200 elements over the whole
+ * run (one run each: they are deterministic and long). */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "gallop.h"
+#include "gallop/scene.h"
+#include "gallop/sim.h"
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* wall time per simulated second (integration), and the set-up + identification time */
+static int run(int elements, gal_model_kind kind, double duration, double *per_s, double *build)
+{
+    char e[64], d[64];
+    snprintf(e, sizeof e, "model.elements=%d", elements);
+    snprintf(d, sizeof d, "simulation.duration=%g", duration);
+    const char *ov[] = {e, d};
+    gal_scene sc;
+    if (gal_scene_load(&sc, "data/scenes/iced_gallop.ini", ov, 2, NULL)) return 1;
+    gal_sim_setup s;
+    gal_sim_result r;
+    if (gal_sim_setup_init(&s, &sc, 1) || gal_sim_run(&s, kind, &r)) {
+        fprintf(stderr, "bench_sim: %s\n", gal_error_message());
+        return 1;
+    }
+    *per_s = r.wall_time_s / duration;
+    *build = s.setup_time_s + r.build_time_s;
+    gal_sim_result_clear(&r);
+    gal_sim_setup_clear(&s);
+    return 0;
+}
+
+static int median(int elements, gal_model_kind kind, double duration, int reps, double *per_s, double *build)
+{
+    double a[8], b[8];
+    for (int k = 0; k < reps; k++)
+        if (run(elements, kind, duration, &a[k], &b[k])) return 1;
+    qsort(a, reps, sizeof(double), cmp);
+    qsort(b, reps, sizeof(double), cmp);
+    *per_s = a[reps / 2], *build = b[reps / 2];
+    return 0;
+}
+
+int main(void)
+{
+    double ps, bt;
+    printf("%-44s %10s %16s %14s\n", "case (data/scenes/iced_gallop.ini)", "elements", "wall s / sim s", "set-up s");
+    int nf[2] = {100, 400}, nr[2] = {100, 1000};
+    for (int k = 0; k < 2; k++) {
+        if (median(nf[k], GAL_MODEL_FULL, 60, 3, &ps, &bt)) return 1;
+        printf("%-44s %10d %16.5f %14.3f\n", "full model, 60 s (median of 3)", nf[k], ps, bt);
+    }
+    for (int k = 0; k < 2; k++) {
+        if (median(nr[k], GAL_MODEL_REDUCED, 500, 3, &ps, &bt)) return 1;
+        printf("%-44s %10d %16.5f %14.3f\n", "reduced model, 500 s (median of 3)", nr[k], ps, bt);
+    }
+    double pf, pr, bf, br;
+    if (run(200, GAL_MODEL_FULL, 500, &pf, &bf) || run(200, GAL_MODEL_REDUCED, 500, &pr, &br)) return 1;
+    printf("%-44s %10d %16.5f %14.3f\n", "full model, 500 s", 200, pf, bf);
+    printf("%-44s %10d %16.5f %14.3f\n", "reduced model, 500 s", 200, pr, br);
+    printf("speedup of reduced over full at 200 elements, per simulated second: %.0fx "
+           "(with the reduced set-up and identification counted: %.0fx)\n", pf / pr, pf * 500 / (pr * 500 + br));
+    return 0;
+}
