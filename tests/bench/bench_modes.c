@@ -16,7 +16,6 @@ static int cmp(const void *a, const void *b)
 int main(void)
 {
     int nels[3] = {100, 1000, 10000}, reps[3] = {15, 9, 5};
-    printf("%-34s %10s %12s %12s %12s\n", "case", "elements", "statics ms", "modes ms", "total ms");
     for (int c = 0; c < 3; c++) {
         double ts[32], tm[32], tt[32];
         for (int r = 0; r < reps[c]; r++) {
@@ -39,8 +38,8 @@ int main(void)
         qsort(ts, reps[c], sizeof(double), cmp);
         qsort(tm, reps[c], sizeof(double), cmp);
         qsort(tt, reps[c], sizeof(double), cmp);
-        printf("%-34s %10d %12.2f %12.2f %12.2f\n", "statics + 20 modes (median)", nels[c],
-               ts[reps[c] / 2], tm[reps[c] / 2], tt[reps[c] / 2]);
+        printf("BENCH|statics + 20 modes, %d elements (300 m Drake)|%.2f|ms|median of %d (statics %.2f, modes %.2f)\n",
+               nels[c], tt[reps[c] / 2], reps[c], ts[reps[c] / 2], tm[reps[c] / 2]);
     }
     return 0;
 }

@@ -52,21 +52,20 @@ static int median(int elements, gal_model_kind kind, double duration, int reps, 
 int main(void)
 {
     double ps, bt;
-    printf("%-44s %10s %16s %14s\n", "case (data/scenes/iced_gallop.ini)", "elements", "wall s / sim s", "set-up s");
     int nf[2] = {100, 400}, nr[2] = {100, 1000};
     for (int k = 0; k < 2; k++) {
         if (median(nf[k], GAL_MODEL_FULL, 60, 3, &ps, &bt)) return 1;
-        printf("%-44s %10d %16.5f %14.3f\n", "full model, 60 s (median of 3)", nf[k], ps, bt);
+        printf("BENCH|full model, %d elements, iced_gallop|%.5f|s per simulated s|median of 3 runs of 60 s\n", nf[k], ps);
     }
     for (int k = 0; k < 2; k++) {
         if (median(nr[k], GAL_MODEL_REDUCED, 500, 3, &ps, &bt)) return 1;
-        printf("%-44s %10d %16.5f %14.3f\n", "reduced model, 500 s (median of 3)", nr[k], ps, bt);
+        printf("BENCH|reduced model, %d elements, iced_gallop|%.5f|s per simulated s|median of 3 runs of 500 s; set-up and identification %.3f s\n", nr[k], ps, bt);
     }
     double pf, pr, bf, br;
     if (run(200, GAL_MODEL_FULL, 500, &pf, &bf) || run(200, GAL_MODEL_REDUCED, 500, &pr, &br)) return 1;
-    printf("%-44s %10d %16.5f %14.3f\n", "full model, 500 s", 200, pf, bf);
-    printf("%-44s %10d %16.5f %14.3f\n", "reduced model, 500 s", 200, pr, br);
-    printf("speedup of reduced over full at 200 elements, per simulated second: %.0fx "
-           "(with the reduced set-up and identification counted: %.0fx)\n", pf / pr, pf * 500 / (pr * 500 + br));
+    printf("BENCH|full model, 200 elements, iced_gallop|%.5f|s per simulated s|one run of 500 s\n", pf);
+    printf("BENCH|reduced model, 200 elements, iced_gallop|%.5f|s per simulated s|one run of 500 s; identification %.3f s\n", pr, br);
+    printf("BENCH|speedup reduced over full, 200 elements|%.0f|x|per simulated second; %.0fx counting the identification\n",
+           pf / pr, pf * 500 / (pr * 500 + br));
     return 0;
 }
