@@ -51,8 +51,8 @@ static void damping_force(gal_dyn *d, const double *vq, double *Cv)
     }
     gal_rod_gather(rod, vq, d->tmp);
     gal_csc_symv(d->K0, d->tmp, Cv);
-    for (int j = 0; j < n; j++)
-        Cv[j] = d->o.rayleigh_stiffness * Cv[j] + d->o.rayleigh_mass * d->mdiag[j] * d->tmp[j];
+    gal_rod_mass_mult(rod, d->tmp, d->r); /* r is scratch here */
+    for (int j = 0; j < n; j++) Cv[j] = d->o.rayleigh_stiffness * Cv[j] + d->o.rayleigh_mass * d->r[j];
 }
 
 static int external(gal_dyn *d, double t, const double *q, const double *v, double *f)
@@ -107,8 +107,13 @@ gal_dyn *gal_dyn_alloc(const gal_rod *rod, const double *q0, const double *v0, c
     damping_force(d, d->v, d->Cv);
     for (int j = 0; j < n; j++) {
         int k = rod->free_q[j];
-        d->a[k] = (d->fext0[k] - d->fint0[k] - d->Cv[j]) / d->mdiag[j];
+        d->dq[j] = d->fext0[k] - d->fint0[k] - d->Cv[j];
     }
+    if (gal_chol_factor(d->chol, rod->M, 0, NULL) != GAL_OK || gal_chol_solve(d->chol, d->dq, d->tmp) != GAL_OK) {
+        gal_error(GAL_EFAIL, "dynamics: the mass matrix is not positive definite");
+        return gal_dyn_free(d);
+    }
+    for (int j = 0; j < n; j++) d->a[rod->free_q[j]] = d->tmp[j];
     d->energy0 = gal_dyn_energy(d);
     return d;
 }
@@ -117,10 +122,13 @@ double gal_dyn_energy(const gal_dyn *d)
 {
     double U = 0, T = 0;
     gal_rod_eval(d->rod, d->q, &U, NULL, NULL);
-    for (int j = 0; j < d->rod->ndof; j++) {
-        double v = d->v[d->rod->free_q[j]];
-        T += 0.5 * d->mdiag[j] * v * v;
-    }
+    int n = d->rod->ndof;
+    double *vf = malloc((size_t)2 * n * sizeof(double));
+    if (!vf) return NAN;
+    gal_rod_gather(d->rod, d->v, vf);
+    gal_rod_mass_mult(d->rod, vf, vf + n);
+    for (int j = 0; j < n; j++) T += 0.5 * vf[j] * vf[n + j];
+    free(vf);
     return T + U;
 }
 
@@ -167,22 +175,37 @@ static int try_step(gal_dyn *d, double h)
             /* C v_f */
             if (d->o.rayleigh_mass != 0 || d->o.rayleigh_stiffness != 0) {
                 gal_csc_symv(d->K0, d->dq, d->Cv);
+                gal_rod_mass_mult(rod, d->dq, d->tmp);
                 for (int j = 0; j < n; j++)
-                    d->Cv[j] = d->o.rayleigh_stiffness * d->Cv[j] + d->o.rayleigh_mass * d->mdiag[j] * d->dq[j];
+                    d->Cv[j] = d->o.rayleigh_stiffness * d->Cv[j] + d->o.rayleigh_mass * d->tmp[j];
             } else {
                 memset(d->Cv, 0, (size_t)n * sizeof(double));
             }
+            /* M a_m */
             for (int j = 0; j < n; j++) {
                 int k = rod->free_q[j];
-                double amid = (1 - am) * d->a1[k] + am * d->a[k];
-                d->r[j] = d->mdiag[j] * amid + d->Cv[j] + (1 - af) * d->fint1[k] + af * d->fint0[k] -
+                d->dq[j] = (1 - am) * d->a1[k] + am * d->a[k];
+            }
+            gal_rod_mass_mult(rod, d->dq, d->tmp);
+            for (int j = 0; j < n; j++) {
+                int k = rod->free_q[j];
+                d->r[j] = d->tmp[j] + d->Cv[j] + (1 - af) * d->fint1[k] + af * d->fint0[k] -
                           (1 - af) * d->fext1[k] - af * d->fext0[k];
                 rn = fmax(rn, fabs(d->r[j]));
             }
         }
-        if (!isfinite(rn))
+        if (!isfinite(rn)) {
+            /* name the term that went wrong */
+            const char *term = "inertia";
+            for (int j = 0; j < n; j++) {
+                int k = rod->free_q[j];
+                if (!isfinite(d->fext1[k])) { term = "aerodynamic load"; break; }
+                if (!isfinite(d->fint1[k])) { term = "elastic force"; break; }
+                if (!isfinite(d->Cv[j])) { term = "damping force"; break; }
+            }
             return gal_error(GAL_EFAIL, "dynamics: the residual is not finite at t = %.6g s (step %ld, "
-                             "Newton iteration %d): elastic or aerodynamic force", t1, d->steps + 1, it);
+                             "Newton iteration %d): the %s", t1, d->steps + 1, it, term);
+        }
         d->newton_iterations++;
         if (rn <= tol && it > 0) {
             /* accept */
@@ -196,8 +219,8 @@ static int try_step(gal_dyn *d, double h)
         }
         /* S = cm M + cc C + (1-af) K(q1) */
         for (int p = 0; p < d->S->nnz; p++)
-            d->S->val[p] = (1 - af) * d->S->val[p] + cc * d->o.rayleigh_stiffness * d->K0->val[p];
-        for (int j = 0; j < n; j++) d->S->val[d->S->diag[j]] += (cm + cc * d->o.rayleigh_mass) * d->mdiag[j];
+            d->S->val[p] = (1 - af) * d->S->val[p] + cc * d->o.rayleigh_stiffness * d->K0->val[p] +
+                           (cm + cc * d->o.rayleigh_mass) * rod->M->val[p];
         d->factorizations++;
         if ((st = gal_chol_factor(d->chol, d->S, 0, NULL)))
             return gal_error(GAL_EFAIL, "dynamics: the iteration matrix is not positive definite at t = %.6g s", t1);

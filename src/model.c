@@ -22,6 +22,13 @@ int gal_model_rod_params(const gal_scene *sc, gal_rod_params *p, gal_statics_spe
     p->gravity = sc->effect[GAL_FX_GRAVITY] ? GAL_GRAVITY : 0.0;
     p->torsion = sc->effect[GAL_FX_TORSION];
     p->twist_clamped = sc->span.end_twist == GAL_TWIST_CLAMPED;
+    if (sc->ice.present && sc->effect[GAL_FX_ICE_ECCENTRICITY]) {
+        /* the ice centre on the windward side of the section: opposite the reference direction
+         * as the loads turn it by the attack angle (src/loads.c) */
+        p->ecc_mass = sc->ice.mass_per_length;
+        p->ecc = sc->ice.eccentricity;
+        p->ecc_angle = GAL_PI - sc->ice.attack_angle;
+    }
     switch (sc->span.spec) {
     case GAL_SPEC_TENSION: *spec = GAL_BY_TENSION, *value = sc->span.horizontal_tension; break;
     case GAL_SPEC_SAG: *spec = GAL_BY_SAG, *value = sc->span.sag; break;

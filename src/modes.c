@@ -162,7 +162,9 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
     double sigma = -0.1 * kmin * pow(GAL_PI / rod->p.elements, 2);
     if (!(sigma < 0)) sigma = -1e-3;
     out->sigma = sigma;
-    if (gal_chol_factor(chol, K, -sigma, mdiag) != GAL_OK) {
+    /* K - sigma M on the common pattern (M is not diagonal with eccentric ice) */
+    for (int k = 0; k < K->nnz; k++) K->val[k] -= sigma * rod->M->val[k];
+    if (gal_chol_factor(chol, K, 0, NULL) != GAL_OK) {
         st = gal_error(GAL_EFAIL, "modes: K - sigma M is not positive definite at sigma = %g: the "
                        "equilibrium has lost stability (%s)", sigma, gal_error_message());
         goto done;
@@ -180,14 +182,14 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
         dsaupd_c(&ido, "G", n, "LM", nev, tol, resid, ncv, v, n, iparam, ipntr, workd, workl, lworkl, &info);
         double *x = workd + ipntr[0] - 1, *y = workd + ipntr[1] - 1;
         if (ido == -1) {
-            for (int k = 0; k < n; k++) tmp[k] = mdiag[k] * x[k];
+            gal_rod_mass_mult(rod, x, tmp);
             if ((st = gal_chol_solve(chol, tmp, y))) goto done;
             out->op_applications++;
         } else if (ido == 1) {
             if ((st = gal_chol_solve(chol, workd + ipntr[2] - 1, y))) goto done;
             out->op_applications++;
         } else if (ido == 2) {
-            for (int k = 0; k < n; k++) y[k] = mdiag[k] * x[k];
+            gal_rod_mass_mult(rod, x, y);
         } else {
             break;
         }
@@ -228,8 +230,9 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
         /* mass-normalize (ARPACK's are M-orthonormal already; renormalize against round-off) and
          * fix the sign: largest entry positive */
         double mm = 0, big = 0;
+        gal_rod_mass_mult(rod, phi, tmp);
         for (int j = 0; j < n; j++) {
-            mm += mdiag[j] * phi[j] * phi[j];
+            mm += tmp[j] * phi[j];
             if (fabs(phi[j]) > fabs(big)) big = phi[j];
         }
         double s = (big < 0 ? -1.0 : 1.0) / sqrt(mm);

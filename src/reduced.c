@@ -349,8 +349,7 @@ gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes
     if (!w.chol || !w.g || !w.r1 || !w.x || !w.r2 || !w.dl || !w.S || !w.Y || !w.MPhi) {
         st = gal_error(GAL_ENOMEM, "reduced: out of memory");
     } else {
-        for (int i = 0; i < r; i++)
-            for (int j = 0; j < n; j++) w.MPhi[(size_t)i * n + j] = mdiag[j] * rm->phi[(size_t)i * n + j];
+        for (int i = 0; i < r; i++) gal_rod_mass_mult(rod, rm->phi + (size_t)i * n, w.MPhi + (size_t)i * n);
         double weight = 0;
         for (int j = 0; j < n; j++) weight = fmax(weight, mdiag[j] * 9.81);
         double tol = fmax(1e-9 * weight, 20 * DBL_EPSILON * rod->p.length * rod->p.EA / rod->l0[0]);

@@ -22,6 +22,7 @@ static void cross3(const double *a, const double *b, double *r)
 }
 
 static void transport(const double *tb, const double *a, const double *t, double *r);
+static void build_mass(gal_rod *rod);
 
 /* ---- sparse pattern ---- */
 
@@ -194,6 +195,8 @@ gal_rod *gal_rod_free(gal_rod *rod)
         free(rod->edge_inertia);
         free(rod->q0);
         gal_csc_free(rod->K);
+        gal_csc_free(rod->M);
+        free(rod->ecc_c);
         free(rod->slot_node);
         free(rod->slot_edge);
         free(rod);
@@ -264,12 +267,56 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
         }
         for (int k = 0; k < 3; k++) a[k] /= na;
     }
-    if (build_pattern(rod) != GAL_OK) {
+    if (build_pattern(rod) != GAL_OK || !(rod->M = gal_csc_clone(rod->K))) {
         gal_error(GAL_ENOMEM, "rod: out of memory building the stiffness pattern");
         return gal_rod_free(rod);
     }
+    if (p->ecc_mass > 0 && p->ecc != 0 && p->torsion) {
+        rod->ecc_c = malloc((size_t)3 * nel * sizeof(double));
+        if (!rod->ecc_c) { gal_error(GAL_ENOMEM, "rod: out of memory"); return gal_rod_free(rod); }
+        for (int j = 0; j < nel; j++) {
+            double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j, b[3];
+            cross3(t, a, b);
+            for (int k = 0; k < 3; k++) rod->ecc_c[3 * j + k] = cos(p->ecc_angle) * a[k] + sin(p->ecc_angle) * b[k];
+        }
+    }
+    build_mass(rod);
     return rod;
 }
+
+/* M on the pattern of K: the lumped masses on the diagonal and, for eccentric ice, the coupling
+ * of each edge's twist with the translation of its two nodes, 1/2 l0 m_i e (t x c) each (the
+ * kinetic energy of the ice centre x + e c(theta): m_i e xdot . (t x c) thetadot). */
+static void build_mass(gal_rod *rod)
+{
+    gal_csc *M = rod->M;
+    if (!M) return;
+    memset(M->val, 0, (size_t)M->nnz * sizeof(double));
+    double *md = malloc((size_t)rod->ndof * sizeof(double));
+    if (!md) return;
+    gal_rod_mass_diag(rod, md);
+    for (int d = 0; d < rod->ndof; d++) M->val[M->diag[d]] = md[d];
+    free(md);
+    if (!rod->ecc_c || !rod->p.torsion) return;
+    int nn = rod->nn;
+    for (int j = 0; j < rod->p.elements; j++) {
+        int dt = rod->dof[3 * nn + j];
+        if (dt < 0) continue;
+        double g[3], *c = rod->ecc_c + 3 * j, *t = rod->tbar + 3 * j;
+        cross3(t, c, g);
+        double f = 0.5 * rod->l0[j] * rod->p.ecc_mass * rod->p.ecc;
+        for (int node = j; node <= j + 1; node++)
+            for (int k = 0; k < 3; k++) {
+                int dx = rod->dof[3 * node + k];
+                if (dx < 0) continue;
+                int a = dx < dt ? dx : dt, b = dx < dt ? dt : dx;
+                int sl = csc_find(M, a, b);
+                if (sl >= 0) M->val[sl] += f * g[k];
+            }
+    }
+}
+
+void gal_rod_mass_mult(const gal_rod *rod, const double *x, double *y) { gal_csc_symv(rod->M, x, y); }
 
 void gal_rod_set_unstretched_length(gal_rod *rod, double L0)
 {
@@ -283,6 +330,7 @@ void gal_rod_set_unstretched_length(gal_rod *rod, double L0)
         rod->node_mass[j + 1] += 0.5 * rod->p.mass * l0;
         rod->edge_inertia[j] = rod->p.polar_inertia * l0;
     }
+    build_mass(rod);
 }
 
 void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3])
@@ -566,6 +614,20 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
             U += kt * th * th;
             if (grad) grad[k] += 2 * kt * th;
             if (KK && rod->dof[k] >= 0) KK->val[KK->diag[rod->dof[k]]] += 2 * kt;
+        }
+
+    /* weight of the eccentric ice: U = m_i g e l0 c_z(theta), c turned by the twist about the
+     * reference tangent (the tangent's own turn is left out: it is second order here) */
+    if (rod->ecc_c && p->gravity != 0)
+        for (int j = 0; j < nel; j++) {
+            int k = 3 * nn + j;
+            double *c = rod->ecc_c + 3 * j, *t = rod->tbar + 3 * j, tc[3];
+            cross3(t, c, tc);
+            double th = q[k], w = p->ecc_mass * p->gravity * p->ecc * rod->l0[j];
+            double cz = cos(th) * c[2] + sin(th) * tc[2], dcz = -sin(th) * c[2] + cos(th) * tc[2];
+            U += w * cz;
+            if (grad) grad[k] += w * dcz;
+            if (KK && rod->dof[k] >= 0) KK->val[KK->diag[rod->dof[k]]] -= w * cz;
         }
 
     /* gravity: U = sum m_i g z_i */

@@ -82,6 +82,24 @@ static void test_no_gravity(void)
     CHECK(gal_statics_solve(&p, GAL_BY_SAG, 1.0, NULL, &eq) == GAL_EINPUT, "sag without gravity");
 }
 
+/* Eccentric ice: its weight twists the span. With the ice centre level with the axis (no pendulum
+ * stiffness at zero twist) the moment per length is m_i g e and a clamped span twists at mid-span
+ * by m_i g e L0^2 / (8 GJ) (a string under uniform load). */
+static void test_eccentric_ice_twist(void)
+{
+    gal_rod_params p = drake(200, 0, 100);
+    p.GJ = 3e4, p.ecc_mass = 0.6, p.ecc = 0.01, p.ecc_angle = 0; /* along the reference director (y) */
+    p.mass += p.ecc_mass;
+    gal_equilibrium eq;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 28000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
+    int nel = eq.rod->p.elements;
+    double th = 0.5 * (eq.q[3 * eq.rod->nn + nel / 2 - 1] + eq.q[3 * eq.rod->nn + nel / 2]);
+    double L0 = eq.unstretched_length, want = p.ecc_mass * p.gravity * p.ecc * L0 * L0 / (8 * p.GJ);
+    printf("    (mid-span twist %.6g rad, string under uniform moment %.6g rad)\n", th, want);
+    CHECK_REL(fabs(th), want, 1e-2);
+    gal_equilibrium_clear(&eq);
+}
+
 int main(void)
 {
     RUN(test_catenary_roundtrip);
@@ -93,5 +111,6 @@ int main(void)
     RUN(test_inclined_by_length);
     RUN(test_cable_no_bending);
     RUN(test_no_gravity);
+    RUN(test_eccentric_ice_twist);
     return CHECK_SUMMARY();
 }

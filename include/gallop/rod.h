@@ -28,6 +28,13 @@ typedef struct gal_rod_params {
     double gravity;           /* m/s^2, 0 with gravity off */
     int torsion;              /* twist unknowns present */
     int twist_clamped;        /* twist held by the clamps at both supports (else free) */
+    /* eccentric ice: a line mass ecc_mass (kg/m, part of `mass`) whose centre sits at ecc (m) from
+     * the axis, in the section direction at angle ecc_angle (rad) from the reference director,
+     * turning with the twist; 0 = none. It couples twist and translation in the mass matrix and
+     * its weight twists the section. */
+    double ecc_mass;
+    double ecc;
+    double ecc_angle;
 } gal_rod_params;
 
 /* Compressed sparse column, upper triangle (row <= col), for the free degrees of freedom. */
@@ -56,6 +63,9 @@ typedef struct gal_rod {
     double *edge_inertia; /* elements: polar moment of inertia of each edge, kg m^2 */
     double *q0;         /* nq: the configuration the reference frames were taken from */
     gal_csc *K;         /* the tangent's pattern (values are scratch for gal_rod_tangent) */
+    gal_csc *M;         /* the mass matrix on the same pattern: lumped, plus the eccentric ice's
+                         * twist-translation coupling (constant, at the reference frames) */
+    double *ecc_c;      /* 3 elements: direction of the ice centre at zero twist (or NULL) */
     int *slot_node;     /* per interior node: 11 x 11 map local dof pair -> K value index, or -1 */
     int *slot_edge;     /* per edge: 6 x 6 map */
 } gal_rod;
@@ -76,8 +86,10 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
 void gal_rod_gather(const gal_rod *rod, const double *full, double *free_part);
 void gal_rod_scatter(const gal_rod *rod, const double *free_part, double *full);
 
-/* The lumped mass matrix over the free dofs (diagonal, kg or kg m^2). */
+/* The diagonal of the mass matrix over the free dofs (kg or kg m^2). */
 void gal_rod_mass_diag(const gal_rod *rod, double *mdiag);
+/* y = M x over the free dofs. */
+void gal_rod_mass_mult(const gal_rod *rod, const double *x, double *y);
 
 /* Axial tension of each element (N) and horizontal tension at the left support (N). */
 void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension);
