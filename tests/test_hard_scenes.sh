@@ -207,5 +207,24 @@ known_dynamics_bug() {
 }
 known_dynamics_bug
 
+# ---- known gap in src/sim.c (not counted): a full-model step tied to a coarse output interval.
+# time_step = output_interval = 10 s is accepted and the run "succeeds" with the galloping at
+# about 0.25 Hz reported at the sampling's alias frequency; it must be refused or adapted.
+known_coarse_step() {
+    local f
+    zero_heap timeout 120 "$GALLOP" simulate "$H/huge_time_step.ini" --model full --set simulation.duration=1000 \
+        --set simulation.time_step=10 --set simulation.output_interval=10 -o "$tmp/coarse" >/dev/null 2>"$tmp/coarse.err"
+    local rc=$?
+    f=$(json frequency_hz "$tmp/coarse/summary.json" 2>/dev/null)
+    if [ $rc -eq 1 ] || [ $rc -eq 2 ]; then
+        ok "time_step = output_interval = 10 s refused: $(tail -n 1 "$tmp/coarse.err" | cut -c1-120)"
+    elif [ $rc -eq 0 ] && awk -v f="$f" 'BEGIN{exit !(f > 0.2 && f < 0.3)}'; then
+        ok "time_step = output_interval = 10 s adapted: $f Hz"
+    else
+        echo "  KNOWN src/sim.c: time_step = output_interval = 10 s: exit $rc, galloping frequency '$f' Hz (true about 0.25 Hz)"
+    fi
+}
+known_coarse_step
+
 echo "#summary $pass $fail"
 [ $fail -eq 0 ]
