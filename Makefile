@@ -57,6 +57,31 @@ $(BUILD)/tests/%: tests/%.c tests/check.h $(BUILD)/libgallop.a
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d)
 
+# ---- fuzzing (issue 8): libFuzzer harnesses of the scene and table parsers, built with clang ----
+FUZZ_TIME ?= 60
+FUZZ_CC   ?= clang
+FUZZ_PKGS := clang libclang-rt-14-dev
+FUZZ_STAMP := build/.fuzz-deps-ok
+FUZZ_DIR  := build/fuzz
+FUZZ_SAN  := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+FUZZ_CFLAGS := $(CSTD) -g -O1 $(FUZZ_SAN)
+FUZZ_OBJ  := $(patsubst src/%.c,$(FUZZ_DIR)/obj/%.o,$(LIB_SRC))
+
+$(FUZZ_STAMP): | $(STAMP)
+	@sh tests/deps.sh $(FUZZ_PKGS)
+	@touch $@
+
+$(FUZZ_DIR)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*.h src/*.h) | $(FUZZ_STAMP)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link $(CPPFLAGS) -c $< -o $@
+
+$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_OBJ) | $(FUZZ_STAMP)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $(CPPFLAGS) $< $(FUZZ_OBJ) $(LIBS) -o $@
+
+.SECONDARY: $(FUZZ_OBJ)
+fuzz: $(FUZZ_DIR)/fuzz_scene $(FUZZ_DIR)/fuzz_aero
+	@bash tests/fuzz/run.sh $(FUZZ_DIR) $(FUZZ_TIME)
+
 # ---- the main job and the tests ----
 DEMO_SCENE ?= data/scenes/drake_300m.ini
 demo: $(BUILD)/gallop

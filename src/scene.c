@@ -4,6 +4,7 @@
  * from a CSV table; defaults, cross-checks and effects follow; gal_scene_print writes it back. */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "gallop/scene.h"
+#include "gallop/aero.h"
 #include "gallop/core.h"
 
 #include <ini.h>
@@ -16,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #define DEG (3.14159265358979323846 / 180.0) /* rad per degree */
@@ -356,6 +358,21 @@ static int apply(pstate *ps, int k, const char *v, int line)
                         "[%s] %s = %s: resolved path too long or unprintable; allowed: at most "
                         "%d printable characters",
                         kd->sec, kn, sv, GAL_PATH_MAX - 1);
+        struct stat fst;
+        if (stat(real, &fst) != 0 || !S_ISREG(fst.st_mode))
+            return fail(ps, GAL_EINPUT, line,
+                        "[%s] %s = %s: %s is not a regular file; allowed: a readable CSV file",
+                        kd->sec, kn, sv, show(real, rt, sizeof rt));
+        /* read it now, whatever the command: a bad table is bad input before any output */
+        gal_aero_table *tab = NULL;
+        int tst = gal_aero_table_read(real, &tab);
+        gal_aero_table_free(tab);
+        if (tst != GAL_OK)
+            return fail(ps, tst == GAL_ENOMEM ? GAL_ENOMEM : GAL_EINPUT, line,
+                        "[%s] %s = %s: %s; allowed: a CSV table '# source: ...', "
+                        "'alpha_deg,cd,cl,cm', rows of 4 finite numbers, angles increasing over "
+                        "one period",
+                        kd->sec, kn, sv, gal_error_message());
         strcpy(sc->ice.aero_table, real);
         break;
     }

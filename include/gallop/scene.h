@@ -108,7 +108,8 @@ extern const char *const gal_effect_names[GAL_FX_COUNT];
  * if GALLOP_DATA is set, else data/conductors.csv if it exists in the current directory, else
  * conductors.csv in the parent of the scene's directory, since scenes live in data/scenes/).
  * The table is read only when conductor.name is given; the scene's conductor keys override its
- * row. Returns GAL_OK, or GAL_EINPUT / GAL_EIO (unreadable file) with a message
+ * row. An [ice] aero_table is read and checked here (gal_aero_table_read), whatever the command, so
+ * that a bad table is refused as bad input before anything is computed or written. Returns GAL_OK, or GAL_EINPUT / GAL_EIO (unreadable file) with a message
  * "FILE:LINE: [section] key = value: what is wrong; allowed: range" ("--set: ..." for overrides,
  * "FILE: ..." for a missing key). The ranges are listed in src/scene.c (table `keys`). */
 int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides, int n,
