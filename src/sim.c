@@ -193,6 +193,14 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
         }
     double dt_out = sc->simulation.output_interval;
     if (!(dt_out > 0)) dt_out = fmin(0.05, 1.0 / (10 * fhi));
+    else if (dt_out > 0.25 / fhi) {
+        /* the samples must resolve what the model carries, or the spectra alias */
+        free(res->time);
+        res->time = NULL;
+        return gal_error(GAL_EINPUT, "%s: [simulation] output_interval = %g s cannot resolve the highest "
+                         "selected mode (%.4g Hz); allowed: 0 (chosen) or up to %.4g s, a quarter of its period",
+                         sc->path, dt_out, fhi, 0.25 / fhi);
+    }
     res->dt_out = dt_out;
     long ns = (long)floor(sc->simulation.duration / dt_out + 1e-9) + 1;
     res->nsamples = ns;

@@ -187,8 +187,8 @@ if zero_heap run huge_time_step simulate "$H/huge_time_step.ini" --model full; t
     fi
 fi
 
-# ---- known bug in src/dynamics.c (not counted): full-model results must not depend on what
-# fresh heap memory holds. Fill it with 0xfe bytes (a huge negative double) instead of zeros.
+# ---- full-model results must not depend on what fresh heap memory holds (a bug once): fill it
+# with 0xfe bytes (a huge negative double) instead of zeros.
 known_dynamics_bug() {
     local a b
     GLIBC_TUNABLES=glibc.malloc.perturb=1 ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}malloc_fill_byte=254" \
@@ -201,15 +201,15 @@ known_dynamics_bug() {
     if [ -n "$a" ] && [ "$a" = "$b" ]; then
         ok "full model independent of uninitialised heap memory"
     else
-        echo "  KNOWN src/dynamics.c: v1 at the clamped nodes is uninitialised: garbage heap gives" \
+        bad "full model depends on uninitialised heap memory: garbage heap gives" \
              "'${a:-$(tail -n 1 "$tmp/garbage.err" | cut -c1-120)}', zeroed heap '$b'"
     fi
 }
 known_dynamics_bug
 
-# ---- known gap in src/sim.c (not counted): a full-model step tied to a coarse output interval.
-# time_step = output_interval = 10 s is accepted and the run "succeeds" with the galloping at
-# about 0.25 Hz reported at the sampling's alias frequency; it must be refused or adapted.
+# ---- a full-model step tied to a coarse output interval: time_step = output_interval = 10 s
+# would report the galloping (about 0.25 Hz) at the sampling's alias frequency: it must be
+# refused or adapted.
 known_coarse_step() {
     local f
     zero_heap timeout 120 "$GALLOP" simulate "$H/huge_time_step.ini" --model full --set simulation.duration=1000 \
@@ -221,7 +221,7 @@ known_coarse_step() {
     elif [ $rc -eq 0 ] && awk -v f="$f" 'BEGIN{exit !(f > 0.2 && f < 0.3)}'; then
         ok "time_step = output_interval = 10 s adapted: $f Hz"
     else
-        echo "  KNOWN src/sim.c: time_step = output_interval = 10 s: exit $rc, galloping frequency '$f' Hz (true about 0.25 Hz)"
+        bad "time_step = output_interval = 10 s: exit $rc, galloping frequency '$f' Hz (true about 0.25 Hz)"
     fi
 }
 known_coarse_step
