@@ -221,6 +221,37 @@ static int condense(gal_rod *rod, const double *q_eq, const gal_reduced *rm, kkt
     return gal_error(GAL_EFAIL, "reduced: the condensation did not converge in 60 Newton iterations");
 }
 
+int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const double *q_eq, const double *eta, double *f)
+{
+    int n = rod->ndof, nq = rod->nq, r = rm->r, st;
+    kkt_ws w = {0};
+    w.chol = gal_chol_alloc(rod->K);
+    w.g = malloc((size_t)nq * sizeof(double));
+    w.r1 = malloc((size_t)n * sizeof(double)), w.x = malloc((size_t)n * sizeof(double));
+    w.r2 = malloc((size_t)r * sizeof(double)), w.dl = malloc((size_t)r * sizeof(double));
+    w.S = malloc((size_t)r * r * sizeof(double));
+    w.Y = malloc((size_t)n * r * sizeof(double)), w.MPhi = malloc((size_t)n * r * sizeof(double));
+    double *q = malloc((size_t)nq * sizeof(double));
+    if (!w.chol || !w.g || !w.r1 || !w.x || !w.r2 || !w.dl || !w.S || !w.Y || !w.MPhi || !q) {
+        st = gal_error(GAL_ENOMEM, "reduced: out of memory");
+    } else {
+        for (int i = 0; i < r; i++) gal_rod_mass_mult(rod, rm->phi + (size_t)i * n, w.MPhi + (size_t)i * n);
+        memcpy(q, q_eq, (size_t)nq * sizeof(double));
+        for (int j = 0; j < n; j++) {
+            double u = 0;
+            for (int i = 0; i < r; i++) u += rm->phi[(size_t)i * n + j] * eta[i];
+            q[rod->free_q[j]] += u;
+        }
+        for (int i = 0; i < r; i++) f[i] = rm->omega2[i] * eta[i];
+        double tol = 20 * DBL_EPSILON * rod->p.length * rod->p.EA / rod->l0[0];
+        long it = 0;
+        st = condense(rod, q_eq, rm, &w, eta, q, f, fmax(tol, 1e-9), &it);
+    }
+    gal_chol_free(w.chol);
+    free(w.g); free(w.r1); free(w.x); free(w.r2); free(w.dl); free(w.S); free(w.Y); free(w.MPhi); free(q);
+    return st;
+}
+
 gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
                                int r, const gal_obs *obs_in, int nobs, const gal_reduced_opts *o_in)
 {

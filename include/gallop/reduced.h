@@ -69,6 +69,10 @@ void gal_reduced_force(const gal_reduced *rm, const double *eta, double *f);
 void gal_reduced_observe(const gal_reduced *rm, const double *eta, double *out);
 void gal_reduced_observe_rate(const gal_reduced *rm, const double *eta, const double *deta, double *out,
                               double *rate);
+/* The exact condensed restoring force at eta: the constraint forces of the full rod held at
+ * Phi^T M u = eta with every other dof relaxed (what the polynomial f fits; costs a Newton solve). */
+int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const double *q_eq, const double *eta,
+                                double *f);
 /* The Galerkin projection on the same linear modes, Phi^T grad U(q_eq + Phi eta) (cost grows with
  * the elements; what the condensation corrects; for comparison). */
 int gal_reduced_projected_force(const gal_reduced *rm, const gal_rod *rod, const double *q_eq,
