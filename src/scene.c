@@ -39,7 +39,7 @@ enum {
     K_SPEED, K_YAW, K_RHO, K_TURB, K_INTENS, K_COH, K_SEED,
     K_FX0, K_FXLAST = K_FX0 + GAL_FX_COUNT - 1,
     K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW,
-    K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL,
+    K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL, K_START,
     K_DIR, K_COUNT
 };
 
@@ -55,6 +55,7 @@ typedef struct {
 } keydef;
 
 static const char *const twist_names[] = {"clamped", "free", NULL};
+static const char *const start_names[] = {"rest", "mean_wind", NULL};
 static const char *const turb_names[] = {"none", "kaimal", "davenport", "von_karman", NULL};
 static const char *const sections[] = {"span", "conductor", "ice", "wind", "effects",
                                        "model", "simulation", "output", NULL};
@@ -113,6 +114,9 @@ static const keydef keys[K_COUNT] = {
     NUM("simulation", "rho_inf", simulation.rho_inf, 0, 0, 1, 0,
         "-, full model: spectral radius at infinite frequency (1 = no numerical dissipation)"),
     NUM("simulation", "tolerance", simulation.tolerance, 0, 1, 0.1, 0, "-, reduced model: relative error per step"),
+    {"simulation", "start", T_ENUM, 0, 0, 0, 0, 0, 1.0,
+     "rest | mean_wind (rest: the wind ramps in over wind_ramp; mean_wind: from the equilibrium under the mean wind)",
+     start_names},
     {"output", "directory", T_DIR, 0, 0, 0, 0, 0, 1.0, "path", NULL},
 };
 
@@ -315,6 +319,7 @@ static int apply(pstate *ps, int k, const char *v, int line)
             return fail(ps, GAL_EINPUT, line, "[%s] %s = %s: unknown value; allowed: %s", kd->sec,
                         kn, sv, kd->unit);
         if (k == K_TWIST) sc->span.end_twist = i ? GAL_TWIST_FREE : GAL_TWIST_CLAMPED;
+        else if (k == K_START) sc->simulation.start_mean_wind = i;
         else
             sc->wind.turbulence = i == 1 ? GAL_TURB_KAIMAL
                                   : i == 2 ? GAL_TURB_DAVENPORT
@@ -1067,6 +1072,7 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
     put_key(fp, sc, K_OUTDT);
     put_key(fp, sc, K_RHOINF);
     put_key(fp, sc, K_TOL);
+    fprintf(fp, "start = %s ; rest | mean_wind\n", start_names[sc->simulation.start_mean_wind ? 1 : 0]);
 
     fprintf(fp, "\n[output]\n");
     fprintf(fp, "; path\n");

@@ -29,6 +29,7 @@ void gal_sim_setup_clear(gal_sim_setup *s)
     if (s->have_modes) gal_modes_clear(&s->md);
     gal_aero_table_free(s->table);
     free(s->wind_u);
+    free(s->q_start);
     memset(s, 0, sizeof *s);
 }
 
@@ -117,6 +118,17 @@ int gal_sim_setup_init(gal_sim_setup *s, const gal_scene *sc, int need_modes)
         st = wind_field(s);
         if (st) return st;
         s->wind_time_s = gal_wall_time() - tw;
+    }
+    /* the start: the sagged equilibrium, or the equilibrium under the mean wind (then the wind
+     * blows at full speed from t = 0) */
+    s->q_start = malloc((size_t)s->eq.rod->nq * sizeof(double));
+    if (!s->q_start) return gal_error(GAL_ENOMEM, "out of memory");
+    memcpy(s->q_start, s->eq.q, (size_t)s->eq.rod->nq * sizeof(double));
+    if (sc->simulation.start_mean_wind && L->table) {
+        int it = 0;
+        st = gal_loads_static(s->eq.rod, s->q_start, L, 1e-6 * fmax(s->eq.horizontal_tension, 1.0) / sc->model.elements, 100, &it);
+        if (st) return gal_error(st, "%s: no equilibrium under the mean wind: %s", sc->path, gal_error_message());
+        L->ramp_time = 0;
     }
     s->setup_time_s = gal_wall_time() - t0;
     return GAL_OK;
@@ -228,7 +240,7 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
         o.rayleigh_mass = ra, o.rayleigh_stiffness = rb;
         gal_force F = {0};
         if (s->loads.table) F.eval = gal_loads_full, F.ctx = &s->loads;
-        gal_dyn *d = gal_dyn_alloc(rod, s->eq.q, NULL, &o, &F);
+        gal_dyn *d = gal_dyn_alloc(rod, s->q_start, NULL, &o, &F);
         if (!d) { free(u); return GAL_EFAIL; }
         res->time_step_s = o.h;
         for (long i = 0; i < ns && !st; i++) {
@@ -283,6 +295,21 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
         gal_pointload pl = {0};
         if (s->loads.table) pl.eval = gal_loads_point, pl.ctx = &s->loads;
         gal_rdyn *d = gal_rdyn_alloc(rm, rod, s->eq.q, ra, rb, &pl, nqp, sc->simulation.tolerance, dt_out / 4, -1);
+        if (d && sc->simulation.start_mean_wind) {
+            /* the start in the modes: eta = Phi^T M (q_start - q_eq) */
+            int n = rod->ndof;
+            double *du = malloc((size_t)2 * n * sizeof(double));
+            if (du) {
+                for (int j = 0; j < n; j++) du[j] = s->q_start[rod->free_q[j]] - s->eq.q[rod->free_q[j]];
+                gal_rod_mass_mult(rod, du, du + n);
+                for (int i = 0; i < r; i++) {
+                    double e = 0;
+                    for (int j = 0; j < n; j++) e += rm->phi[(size_t)i * n + j] * du[n + j];
+                    d->y[i] = e;
+                }
+                free(du);
+            }
+        }
         double *ov = malloc((size_t)no * sizeof(double)), *ys = malloc((size_t)2 * r * sizeof(double));
         if (!d || !ov || !ys) { free(ov); free(ys); gal_rdyn_free(d); gal_reduced_free(rm); free(u); return GAL_ENOMEM; }
         t0 = gal_wall_time();

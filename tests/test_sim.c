@@ -44,6 +44,36 @@ static void test_dynamic_blowout_matches_statics(void)
     gal_sim_setup_clear(&s);
 }
 
+/* simulation.start = mean_wind: the run starts on the equilibrium under the mean wind, so it starts
+ * at rest there: no blow-out transient (the rest start swings by centimetres). */
+static void test_start_from_mean_wind(void)
+{
+    double swing[2], y0[2];
+    for (int k = 0; k < 2; k++) {
+        gal_scene sc;
+        const char *ov[] = {"model.elements=20", "simulation.duration=20", "effects.aero_lift=off",
+                            k ? "simulation.start=mean_wind" : "simulation.start=rest"};
+        if (load(&sc, "data/scenes/iced_gallop.ini", ov, 4)) return;
+        gal_sim_setup s;
+        CHECK(gal_sim_setup_init(&s, &sc, 1) == GAL_OK, "%s", gal_error_message());
+        gal_sim_result r;
+        CHECK(gal_sim_run(&s, GAL_MODEL_FULL, &r) == GAL_OK, "%s", gal_error_message());
+        int kp = gal_sim_mid_probe(&r);
+        double lo = INFINITY, hi = -INFINITY;
+        for (long i = r.nsamples / 2; i < r.nsamples; i++) {
+            double y = r.trace[(size_t)i * 4 * r.nprobe + 4 * kp];
+            lo = fmin(lo, y), hi = fmax(hi, y);
+        }
+        swing[k] = hi - lo, y0[k] = r.trace[4 * kp];
+        gal_sim_result_clear(&r);
+        gal_sim_setup_clear(&s);
+    }
+    printf("    (horizontal swing over 10-20 s: %.3g m from rest, %.3g m from the mean-wind equilibrium, "
+           "which starts %.4g m across)\n", swing[0], swing[1], y0[1]);
+    CHECK(y0[1] > 0.1 && y0[0] == 0, "the mean-wind start is blown out: %g", y0[1]);
+    CHECK(swing[1] < 0.01 * swing[0], "no transient from the mean-wind equilibrium: %g vs %g", swing[1], swing[0]);
+}
+
 /* peak-to-peak of the vertical displacement at the mid probe over [t0, t1] */
 static double pp(const gal_sim_result *r, double t0, double t1)
 {
@@ -138,6 +168,7 @@ static void test_torsional_stiffness_delays_and_lowers_galloping(void)
 int main(void)
 {
     RUN(test_dynamic_blowout_matches_statics);
+    RUN(test_start_from_mean_wind);
     RUN(test_stable_section_decays);
     RUN(test_galloping_full_vs_reduced);
     RUN(test_torsional_stiffness_delays_and_lowers_galloping);

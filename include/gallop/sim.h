@@ -21,6 +21,7 @@ typedef struct gal_sim_setup {
     gal_aero_table *table; /* owned */
     gal_loads loads;
     double *wind_u;        /* owned turbulence field, or NULL */
+    double *q_start;       /* owned: the start (the equilibrium, or under the mean wind) */
     double setup_time_s;
     double wind_time_s;
 } gal_sim_setup;
