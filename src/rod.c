@@ -197,6 +197,7 @@ gal_rod *gal_rod_free(gal_rod *rod)
         gal_csc_free(rod->K);
         gal_csc_free(rod->M);
         free(rod->ecc_c);
+        free(rod->mdiag);
         free(rod->slot_node);
         free(rod->slot_edge);
         free(rod);
@@ -292,11 +293,9 @@ static void build_mass(gal_rod *rod)
     gal_csc *M = rod->M;
     if (!M) return;
     memset(M->val, 0, (size_t)M->nnz * sizeof(double));
-    double *md = malloc((size_t)rod->ndof * sizeof(double));
-    if (!md) return;
-    gal_rod_mass_diag(rod, md);
-    for (int d = 0; d < rod->ndof; d++) M->val[M->diag[d]] = md[d];
-    free(md);
+    if (!rod->mdiag && !(rod->mdiag = malloc((size_t)rod->ndof * sizeof(double)))) return;
+    gal_rod_mass_diag(rod, rod->mdiag);
+    for (int d = 0; d < rod->ndof; d++) M->val[M->diag[d]] = rod->mdiag[d];
     if (!rod->ecc_c || !rod->p.torsion) return;
     int nn = rod->nn;
     for (int j = 0; j < rod->p.elements; j++) {
@@ -316,7 +315,14 @@ static void build_mass(gal_rod *rod)
     }
 }
 
-void gal_rod_mass_mult(const gal_rod *rod, const double *x, double *y) { gal_csc_symv(rod->M, x, y); }
+void gal_rod_mass_mult(const gal_rod *rod, const double *x, double *y)
+{
+    if (rod->ecc_c && rod->p.torsion) {
+        gal_csc_symv(rod->M, x, y);
+        return;
+    }
+    for (int d = 0; d < rod->ndof; d++) y[d] = rod->mdiag[d] * x[d]; /* lumped: diagonal */
+}
 
 void gal_rod_set_unstretched_length(gal_rod *rod, double L0)
 {

@@ -66,6 +66,7 @@ typedef struct gal_rod {
     gal_csc *M;         /* the mass matrix on the same pattern: lumped, plus the eccentric ice's
                          * twist-translation coupling (constant, at the reference frames) */
     double *ecc_c;      /* 3 elements: direction of the ice centre at zero twist (or NULL) */
+    double *mdiag;      /* ndof: the diagonal of M (the whole of it without eccentric ice) */
     int *slot_node;     /* per interior node: 11 x 11 map local dof pair -> K value index, or -1 */
     int *slot_edge;     /* per edge: 6 x 6 map */
 } gal_rod;
