@@ -144,6 +144,27 @@ typedef struct {
     double *g, *r1, *r2, *Y, *S, *x, *mdiag, *MPhi, *dq, *dl, *qt;
 } kkt_ws;
 
+/* The workspace of the condensation, with M Phi (r columns of n). */
+static int kkt_alloc(kkt_ws *w, const gal_rod *rod, const gal_reduced *rm)
+{
+    int n = rod->ndof, nq = rod->nq, r = rm->r;
+    w->chol = gal_chol_alloc(rod->K);
+    w->g = malloc((size_t)nq * sizeof(double));
+    w->r1 = malloc((size_t)n * sizeof(double)), w->x = malloc((size_t)n * sizeof(double));
+    w->r2 = malloc((size_t)r * sizeof(double)), w->dl = malloc((size_t)r * sizeof(double));
+    w->S = malloc((size_t)r * r * sizeof(double));
+    w->Y = malloc((size_t)n * r * sizeof(double)), w->MPhi = malloc((size_t)n * r * sizeof(double));
+    if (!w->chol || !w->g || !w->r1 || !w->x || !w->r2 || !w->dl || !w->S || !w->Y || !w->MPhi) return GAL_ENOMEM;
+    for (int i = 0; i < r; i++) gal_rod_mass_mult(rod, rm->phi + (size_t)i * n, w->MPhi + (size_t)i * n);
+    return GAL_OK;
+}
+
+static void kkt_free(kkt_ws *w)
+{
+    gal_chol_free(w->chol);
+    free(w->g); free(w->r1); free(w->x); free(w->r2); free(w->dl); free(w->S); free(w->Y); free(w->MPhi);
+}
+
 static int solve_small(double *A, double *b, int r)
 {
     /* Gaussian elimination with partial pivoting (r <= 40), A destroyed, b := A^-1 b */
@@ -225,17 +246,10 @@ int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const doubl
 {
     int n = rod->ndof, nq = rod->nq, r = rm->r, st;
     kkt_ws w = {0};
-    w.chol = gal_chol_alloc(rod->K);
-    w.g = malloc((size_t)nq * sizeof(double));
-    w.r1 = malloc((size_t)n * sizeof(double)), w.x = malloc((size_t)n * sizeof(double));
-    w.r2 = malloc((size_t)r * sizeof(double)), w.dl = malloc((size_t)r * sizeof(double));
-    w.S = malloc((size_t)r * r * sizeof(double));
-    w.Y = malloc((size_t)n * r * sizeof(double)), w.MPhi = malloc((size_t)n * r * sizeof(double));
     double *q = malloc((size_t)nq * sizeof(double));
-    if (!w.chol || !w.g || !w.r1 || !w.x || !w.r2 || !w.dl || !w.S || !w.Y || !w.MPhi || !q) {
+    if (kkt_alloc(&w, rod, rm) != GAL_OK || !q) {
         st = gal_error(GAL_ENOMEM, "reduced: out of memory");
     } else {
-        for (int i = 0; i < r; i++) gal_rod_mass_mult(rod, rm->phi + (size_t)i * n, w.MPhi + (size_t)i * n);
         memcpy(q, q_eq, (size_t)nq * sizeof(double));
         for (int j = 0; j < n; j++) {
             double u = 0;
@@ -247,8 +261,7 @@ int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const doubl
         long it = 0;
         st = condense(rod, q_eq, rm, &w, eta, q, f, fmax(tol, 1e-9), &it);
     }
-    gal_chol_free(w.chol);
-    free(w.g); free(w.r1); free(w.x); free(w.r2); free(w.dl); free(w.S); free(w.Y); free(w.MPhi); free(q);
+    kkt_free(&w); free(q);
     return st;
 }
 
@@ -371,16 +384,9 @@ gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes
     }
     gal_rod_mass_diag(rod, mdiag);
     kkt_ws w = {0};
-    w.chol = gal_chol_alloc(rod->K);
-    w.g = malloc((size_t)nq * sizeof(double));
-    w.r1 = malloc((size_t)n * sizeof(double)), w.x = malloc((size_t)n * sizeof(double));
-    w.r2 = malloc((size_t)r * sizeof(double)), w.dl = malloc((size_t)r * sizeof(double));
-    w.S = malloc((size_t)r * r * sizeof(double));
-    w.Y = malloc((size_t)n * r * sizeof(double)), w.MPhi = malloc((size_t)n * r * sizeof(double));
-    if (!w.chol || !w.g || !w.r1 || !w.x || !w.r2 || !w.dl || !w.S || !w.Y || !w.MPhi) {
+    if (kkt_alloc(&w, rod, rm) != GAL_OK) {
         st = gal_error(GAL_ENOMEM, "reduced: out of memory");
     } else {
-        for (int i = 0; i < r; i++) gal_rod_mass_mult(rod, rm->phi + (size_t)i * n, w.MPhi + (size_t)i * n);
         double weight = 0;
         for (int j = 0; j < n; j++) weight = fmax(weight, mdiag[j] * 9.81);
         double tol = fmax(1e-9 * weight, 20 * DBL_EPSILON * rod->p.length * rod->p.EA / rod->l0[0]);
@@ -417,8 +423,7 @@ gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes
             }
         }
     }
-    gal_chol_free(w.chol);
-    free(w.g); free(w.r1); free(w.x); free(w.r2); free(w.dl); free(w.S); free(w.Y); free(w.MPhi);
+    kkt_free(&w);
     if (st) goto done;
 
     /* ---- fit: f_i - w_i^2 eta_i = sum B mu2 + sum A mu3, in scaled variables eta / eta_ref ---- */
