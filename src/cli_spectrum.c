@@ -151,11 +151,8 @@ static void fmt(char *buf, size_t n, double v)
 static int write_psd(const char *dir, const gal_trace *tr, const int *sel, size_t nsel,
                      const double *psd, size_t nf, double df)
 {
-    char *p = gal_path_join(dir, "psd.csv");
-    if (!p) return gal_error(GAL_ENOMEM, "out of memory");
     gal_ofile f;
-    int st = gal_ofile_open(&f, p);
-    free(p);
+    int st = gal_ofile_open_in(&f, dir, "psd.csv");
     if (st) return st;
     fprintf(f.fp, "frequency_hz");
     for (size_t c = 0; c < nsel; c++) fprintf(f.fp, ",%s", tr->names[sel[c]]);
@@ -187,11 +184,8 @@ static int write_summary(const char *dir, const char *path, const gal_trace *tr,
                          size_t nsel, const gal_measures *m, const double *tss, const pair *pairs,
                          size_t npairs, const run_info *ri)
 {
-    char *p = gal_path_join(dir, "summary.json");
-    if (!p) return gal_error(GAL_ENOMEM, "out of memory");
     gal_ofile f;
-    int st = gal_ofile_open(&f, p);
-    free(p);
+    int st = gal_ofile_open_in(&f, dir, "summary.json");
     if (st) return st;
     gal_json j;
     gal_json_begin(&j, f.fp);

@@ -82,11 +82,8 @@ static void csv_num(FILE *fp, double v)
 
 static int write_csv(const stab *S, const char *dir)
 {
-    char *path = gal_path_join(dir, "stability.csv");
-    if (!path) return gal_error(GAL_ENOMEM, "out of memory");
     gal_ofile f;
-    int st = gal_ofile_open(&f, path);
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "stability.csv");
     if (st) return st;
     fprintf(f.fp, "alpha_deg,cd,cl,cm,dcl_dalpha,den_hartog");
     for (int m = 0; m < S->nm; m++) fprintf(f.fp, ",onset_speed_mode%d_m_s", m + 1);
@@ -123,11 +120,8 @@ static void unstable_ranges(const stab *S, gal_json *j)
 static int write_summary(const stab *S, const char *dir)
 {
     const gal_scene *sc = S->sc;
-    char *path = gal_path_join(dir, "summary.json");
-    if (!path) return gal_error(GAL_ENOMEM, "out of memory");
     gal_ofile f;
-    int st = gal_ofile_open(&f, path);
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "summary.json");
     if (st) return st;
     gal_json j;
     gal_json_begin(&j, f.fp);

@@ -34,11 +34,8 @@ static void moments(const gal_wind *w, int j, double U, double *mean, double *sd
 
 static int write_csv(const char *dir, const gal_wind *w, double U, const int *pt, int np)
 {
-    char *path = gal_path_join(dir, "wind.csv");
-    if (!path) return gal_error(GAL_ENOMEM, "out of memory");
     gal_ofile f;
-    int st = gal_ofile_open(&f, path);
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "wind.csv");
     if (st) return st;
     double dx = gal_wind_spacing(w), dt = gal_wind_time_step(w);
     fprintf(f.fp, "time_s");
@@ -56,11 +53,8 @@ static int write_csv(const char *dir, const gal_wind *w, double U, const int *pt
 static int write_summary(const char *dir, const gal_scene *sc, const gal_wind_params *wp, const gal_wind *w,
                          const int *pt, int np, const double *mean, const double *sd, double gen, double wall)
 {
-    char *path = gal_path_join(dir, "summary.json");
-    if (!path) return gal_error(GAL_ENOMEM, "out of memory");
     gal_ofile f;
-    int st = gal_ofile_open(&f, path);
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "summary.json");
     if (st) return st;
     gal_json j;
     gal_json_begin(&j, f.fp);

@@ -66,6 +66,15 @@ int gal_ofile_open(gal_ofile *f, const char *path)
     return GAL_OK;
 }
 
+int gal_ofile_open_in(gal_ofile *f, const char *dir, const char *name)
+{
+    char *path = gal_path_join(dir, name);
+    if (!path) return gal_error(GAL_ENOMEM, "out of memory");
+    int st = gal_ofile_open(f, path);
+    free(path);
+    return st;
+}
+
 int gal_ofile_close(gal_ofile *f, int ok)
 {
     int st = GAL_OK;

@@ -15,10 +15,8 @@ static double node_twist(const gal_rod *rod, const double *q, int i)
 
 static int write_equilibrium(const char *dir, const gal_equilibrium *eq)
 {
-    char *path = gal_path_join(dir, "equilibrium.csv");
     gal_ofile f;
-    int st = path ? gal_ofile_open(&f, path) : gal_error(GAL_ENOMEM, "out of memory");
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "equilibrium.csv");
     if (st) return st;
     const gal_rod *rod = eq->rod;
     int nel = rod->p.elements;
@@ -43,10 +41,8 @@ static int write_equilibrium(const char *dir, const gal_equilibrium *eq)
 
 static int write_modes_csv(const char *dir, const gal_modes *md)
 {
-    char *path = gal_path_join(dir, "modes.csv");
     gal_ofile f;
-    int st = path ? gal_ofile_open(&f, path) : gal_error(GAL_ENOMEM, "out of memory");
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "modes.csv");
     if (st) return st;
     fprintf(f.fp, "index,family,symmetry,frequency_hz,period_s,share_vertical,share_horizontal,"
                   "share_torsional,share_axial,selected\n");
@@ -61,10 +57,8 @@ static int write_modes_csv(const char *dir, const gal_modes *md)
 
 static int write_shapes(const char *dir, const gal_equilibrium *eq, const gal_modes *md)
 {
-    char *path = gal_path_join(dir, "shapes.csv");
     gal_ofile f;
-    int st = path ? gal_ofile_open(&f, path) : gal_error(GAL_ENOMEM, "out of memory");
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "shapes.csv");
     if (st) return st;
     const gal_rod *rod = eq->rod;
     double *full = calloc((size_t)rod->nq, sizeof(double));
@@ -89,10 +83,8 @@ static int write_shapes(const char *dir, const gal_equilibrium *eq, const gal_mo
 static int write_summary(const char *dir, const gal_scene *sc, const gal_equilibrium *eq,
                          const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall)
 {
-    char *path = gal_path_join(dir, "summary.json");
     gal_ofile f;
-    int st = path ? gal_ofile_open(&f, path) : gal_error(GAL_ENOMEM, "out of memory");
-    free(path);
+    int st = gal_ofile_open_in(&f, dir, "summary.json");
     if (st) return st;
     gal_json j;
     gal_json_begin(&j, f.fp);

@@ -233,10 +233,8 @@ int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_re
     c.speedup = (full->wall_time_s / dur) / (red->wall_time_s / dur);
     if (out) *out = c;
 
-    char *path = gal_path_join(dir, "compare.csv");
     gal_ofile f;
-    st = path ? gal_ofile_open(&f, path) : GAL_ENOMEM;
-    free(path);
+    st = gal_ofile_open_in(&f, dir, "compare.csv");
     if (st) return st;
     int wf = 4 * full->nprobe, wr = 4 * red->nprobe;
     fprintf(f.fp, "time_s,full_vertical_m,reduced_vertical_m,full_horizontal_m,reduced_horizontal_m,"
@@ -248,9 +246,7 @@ int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_re
     }
     if ((st = gal_ofile_close(&f, 1))) return st;
 
-    path = gal_path_join(dir, "summary.json");
-    st = path ? gal_ofile_open(&f, path) : GAL_ENOMEM;
-    free(path);
+    st = gal_ofile_open_in(&f, dir, "summary.json");
     if (st) return st;
     gal_json j;
     gal_json_begin(&j, f.fp);

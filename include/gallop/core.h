@@ -41,6 +41,8 @@ typedef struct gal_ofile {
 } gal_ofile;
 int gal_ofile_open(gal_ofile *f, const char *path);
 int gal_ofile_close(gal_ofile *f, int ok);
+/* gal_ofile_open on dir/name. */
+int gal_ofile_open_in(gal_ofile *f, const char *dir, const char *name);
 
 /* mkdir -p; GAL_EIO with a message when it fails. */
 int gal_mkdirs(const char *path);
