@@ -21,8 +21,9 @@ endif
 
 ALL_CFLAGS := $(CSTD) $(WARN) $(OPT) $(SANFLAGS) $(CFLAGS)
 
-LIB_SRC  := $(filter-out src/main.c src/cli_%.c,$(wildcard src/*.c))
-CLI_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,src/main.c $(wildcard src/cli_*.c))
+# the library: every stage folder of src/ but the command line (src/cli/)
+LIB_SRC  := $(filter-out src/cli/%,$(wildcard src/*/*.c))
+CLI_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(wildcard src/cli/*.c))
 LIB_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(LIB_SRC))
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
@@ -41,7 +42,7 @@ $(STAMP):
 	@mkdir -p build && touch $@
 deps: $(STAMP)
 
-$(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*.h src/*.h) | $(STAMP)
+$(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*/*.h src/*/*.h) | $(STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) -MMD -c $< -o $@
 
@@ -71,7 +72,7 @@ $(FUZZ_STAMP): | $(STAMP)
 	@sh tests/deps.sh $(FUZZ_PKGS)
 	@touch $@
 
-$(FUZZ_DIR)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*.h src/*.h) | $(FUZZ_STAMP)
+$(FUZZ_DIR)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*/*.h src/*/*.h) | $(FUZZ_STAMP)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link $(CPPFLAGS) -c $< -o $@
 

@@ -2,8 +2,8 @@
  * overhead transmission conductors (Cosserat rod, paper Eqs. 1-10). */
 #ifndef GALLOP_H
 #define GALLOP_H
-#include "gallop/core.h"
-#include "gallop/aero.h"
-#include "gallop/wind.h"
-#include "gallop/spectrum.h"
+#include "gallop/base/core.h"
+#include "gallop/loads/aero.h"
+#include "gallop/loads/wind.h"
+#include "gallop/analysis/spectrum.h"
 #endif

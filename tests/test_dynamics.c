@@ -2,9 +2,9 @@
  * with energy conserved (no numerical dissipation), large free vibration bounded, damping. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/dynamics.h"
-#include "gallop/modes.h"
-#include "gallop/statics.h"
+#include "gallop/full/dynamics.h"
+#include "gallop/modes/modes.h"
+#include "gallop/statics/statics.h"
 
 static int eccentric; /* the next spans carry eccentric ice */
 

@@ -4,8 +4,8 @@
  * what it should, or fail with a reason. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/modes.h"
-#include "gallop/statics.h"
+#include "gallop/modes/modes.h"
+#include "gallop/statics/statics.h"
 
 static gal_rod_params drake(void)
 {

@@ -14,7 +14,7 @@ tmp=$(mktemp -d /tmp/gallop_hard_XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 H=tests/hard
 
-# Full-model runs: src/dynamics.c leaves the velocity of the clamped nodes in its Newton iterate
+# Full-model runs: src/full/dynamics.c leaves the velocity of the clamped nodes in its Newton iterate
 # (v1) uninitialised (malloc) and the aerodynamic loads read it, so full-model results depend on
 # heap garbage (reported with issue 8). Until that is fixed, full runs get zero-filled fresh heap
 # memory (glibc: perturb byte 255 fills with 0; ASan: fill byte 0); `known_dynamics_bug` below

@@ -3,9 +3,9 @@
  * the wind's ramp, reversal and interpolation of the turbulence field. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/loads.h"
-#include "gallop/modes.h"
-#include "gallop/statics.h"
+#include "gallop/loads/loads.h"
+#include "gallop/modes/modes.h"
+#include "gallop/statics/statics.h"
 
 static gal_rod_params drake(void)
 {

@@ -4,8 +4,8 @@
  * falls with mesh refinement at second order. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/modes.h"
-#include "gallop/statics.h"
+#include "gallop/modes/modes.h"
+#include "gallop/statics/statics.h"
 
 #define L 100.0
 #define H 20000.0

@@ -3,11 +3,11 @@
  * buys over a plain projection on the linear modes. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/modes.h"
-#include "gallop/reduced.h"
-#include "gallop/statics.h"
-#include "gallop/dynamics.h"
-#include "gallop/rdyn.h"
+#include "gallop/modes/modes.h"
+#include "gallop/reduced/reduced.h"
+#include "gallop/statics/statics.h"
+#include "gallop/full/dynamics.h"
+#include "gallop/reduced/rdyn.h"
 
 /* A taut string: no gravity, no bending, no torsion. */
 static void test_kirchhoff_carrier(void)

@@ -2,7 +2,7 @@
  * stiffness against finite differences of its forces, and invariances. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/rod.h"
+#include "gallop/rod/rod.h"
 
 #include <gsl/gsl_rng.h>
 

@@ -4,10 +4,10 @@
  * that a larger torsional stiffness GJ delays steady galloping and lowers its vertical amplitude. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/loads.h"
-#include "gallop/scene.h"
-#include "gallop/sim.h"
-#include "gallop/simreport.h"
+#include "gallop/loads/loads.h"
+#include "gallop/scene/scene.h"
+#include "gallop/run/sim.h"
+#include "gallop/output/simreport.h"
 
 static int load(gal_scene *sc, const char *path, const char *const *ov, int n)
 {

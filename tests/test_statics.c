@@ -2,8 +2,8 @@
  * 0.1% for small EI), for every way of specifying a span, level and inclined. */
 #include "check.h"
 #include "gallop.h"
-#include "gallop/catenary.h"
-#include "gallop/statics.h"
+#include "gallop/statics/catenary.h"
+#include "gallop/statics/statics.h"
 
 /* ACSR Drake-like conductor on a 300 m span */
 static gal_rod_params drake(double L, double h, int nel)

@@ -4,8 +4,8 @@
 #include <stdlib.h>
 
 #include "gallop.h"
-#include "gallop/modes.h"
-#include "gallop/statics.h"
+#include "gallop/modes/modes.h"
+#include "gallop/statics/statics.h"
 
 static int cmp(const void *a, const void *b)
 {

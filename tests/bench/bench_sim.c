@@ -7,8 +7,8 @@
 #include <stdlib.h>
 
 #include "gallop.h"
-#include "gallop/scene.h"
-#include "gallop/sim.h"
+#include "gallop/scene/scene.h"
+#include "gallop/run/sim.h"
 
 static int cmp(const void *a, const void *b)
 {

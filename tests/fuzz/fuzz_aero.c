@@ -13,8 +13,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "gallop/aero.h"
-#include "gallop/core.h"
+#include "gallop/loads/aero.h"
+#include "gallop/base/core.h"
 
 static char tmpdir[64], table_path[96];
 

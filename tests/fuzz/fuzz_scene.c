@@ -15,8 +15,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "gallop/core.h"
-#include "gallop/scene.h"
+#include "gallop/base/core.h"
+#include "gallop/scene/scene.h"
 
 static char tmpdir[64], scene_path[PATH_MAX], conductors[PATH_MAX], aero_link[PATH_MAX],
     scenes_dir[PATH_MAX];

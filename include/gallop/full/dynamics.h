@@ -1,0 +1,61 @@
+/* dynamics.h: the full nonlinear equations of motion of the discretized rod (paper Eq. 9),
+ *   M a + C v + grad U(q) = F(t, q, v),
+ * integrated by the generalized-alpha method (Chung & Hulbert 1993) with Newton's method at each
+ * step on the sparse tangent (CHOLMOD: symbolic analysis once, numeric factorization per Newton
+ * iteration). M is the lumped mass; C = alpha M + beta K0 is Rayleigh damping with K0 the tangent
+ * at the equilibrium (the same definition the reduced model projects); F holds the external
+ * loads (aerodynamics), given by a callback. rho_inf = 1 gives no numerical dissipation. */
+#ifndef GALLOP_DYNAMICS_H
+#define GALLOP_DYNAMICS_H
+
+#include "gallop/rod/rod.h"
+
+/* External generalized forces: add F(t, q, v) to f (configuration-sized; entries of fixed dofs are
+ * ignored). v is configuration-sized too (zero at fixed dofs). Returns a status. */
+typedef struct gal_force {
+    int (*eval)(void *ctx, double t, const double *q, const double *v, double *f);
+    void *ctx;
+} gal_force;
+
+typedef struct gal_dyn_opts {
+    double h;            /* s, time step */
+    double rho_inf;      /* spectral radius at infinite frequency, [0, 1]; 1: no dissipation */
+    double rayleigh_mass;     /* 1/s, alpha of C = alpha M + beta K0 */
+    double rayleigh_stiffness;/* s, beta */
+    double newton_tol;   /* relative residual; default 1e-8 */
+    int max_newton;      /* per step; default 20 */
+    int max_halvings;    /* step halvings on a failed step before giving up; default 6 */
+} gal_dyn_opts;
+
+typedef struct gal_dyn {
+    const gal_rod *rod;
+    gal_dyn_opts o;
+    double am, af, beta, gamma; /* generalized-alpha parameters */
+    double t;                   /* s */
+    double *q;                  /* nq: configuration */
+    double *v, *a;              /* nq: velocity and acceleration (zero at fixed dofs) */
+    double *mdiag;              /* ndof */
+    gal_csc *K0;                /* tangent at the start (for Rayleigh damping) */
+    gal_csc *S;                 /* iteration matrix */
+    void *chol;
+    gal_force force;
+    /* workspace */
+    double *q1, *v1, *a1, *fint0, *fint1, *fext0, *fext1, *r, *dq, *tmp, *Cv;
+    /* counters */
+    long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
+    double energy0;             /* J, mechanical energy at the start */
+} gal_dyn;
+
+void gal_dyn_default_opts(gal_dyn_opts *o);
+/* Start at configuration q0 (an equilibrium) with velocity v0 (configuration-sized, may be NULL:
+ * at rest). The initial acceleration is solved from the equations of motion. */
+gal_dyn *gal_dyn_alloc(const gal_rod *rod, const double *q0, const double *v0, const gal_dyn_opts *o,
+                       const gal_force *force);
+gal_dyn *gal_dyn_free(gal_dyn *d);
+/* Advance by one step of o.h (halving internally when Newton fails: the state is restored and the
+ * interval is covered by smaller steps). GAL_EFAIL with time, step and reason when it cannot. */
+int gal_dyn_step(gal_dyn *d);
+/* Kinetic + elastic + gravity energy, J. */
+double gal_dyn_energy(const gal_dyn *d);
+
+#endif

@@ -1,0 +1,58 @@
+/* modes.h: natural modes of the span about its equilibrium (DESIGN.md "Modes"): the generalized
+ * symmetric problem K phi = w^2 M phi with K the tangent stiffness and M the lumped mass, lowest
+ * modes by ARPACK in shift-invert mode (dsaupd_c/dseupd_c, mode 3) with the factorization of
+ * K - sigma M from CHOLMOD; shapes mass-normalized; each mode classified by family from its shares
+ * of modal kinetic energy and by its symmetry about mid-span. */
+#ifndef GALLOP_MODES_H
+#define GALLOP_MODES_H
+
+#include "gallop/rod/rod.h"
+
+typedef enum {
+    GAL_FAMILY_VERTICAL,   /* in-plane, normal to the conductor */
+    GAL_FAMILY_HORIZONTAL, /* out of the plane of the sagged span */
+    GAL_FAMILY_TORSIONAL,
+    GAL_FAMILY_AXIAL,      /* along the conductor */
+    GAL_FAMILY_COUNT
+} gal_family;
+
+typedef enum { GAL_SYM_SYMMETRIC, GAL_SYM_ANTISYMMETRIC, GAL_SYM_NONE } gal_symmetry;
+
+extern const char *const gal_family_names[GAL_FAMILY_COUNT];
+extern const char *const gal_symmetry_names[3];
+
+typedef struct gal_mode {
+    double omega;          /* rad/s */
+    double frequency_hz;   /* Hz */
+    gal_family family;
+    gal_symmetry symmetry;
+    double share[GAL_FAMILY_COUNT]; /* shares of modal kinetic energy, summing to 1 */
+    int selected;          /* among the modes the scene asked for */
+} gal_mode;
+
+typedef struct gal_modes {
+    int n;                 /* modes computed, by increasing frequency */
+    int ndof;
+    gal_mode *mode;
+    double *shape;         /* ndof x n, column k = mode k over the free dofs, phi^T M phi = 1 */
+    int found[GAL_FAMILY_COUNT];    /* computed modes per family */
+    int selected[GAL_FAMILY_COUNT]; /* selected per family (at most the number asked) */
+    double sigma;          /* the shift, (rad/s)^2 */
+    long arpack_restarts, op_applications, factorizations, solves;
+    int rounds;            /* ARPACK runs (more modes asked for when a family was short) */
+    double wall_time_s;
+} gal_modes;
+
+/* The `nev` lowest modes about configuration q (an equilibrium). GAL_EFAIL when K - sigma M is
+ * not positive definite (the equilibrium is unstable) or ARPACK fails (its info is reported). */
+int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out);
+
+/* Enough modes to hold `want[f]` modes of each family f (vertical, horizontal, torsional; axial
+ * ignored): starts from an estimate by string theory and asks for more until every family is
+ * found or `max_modes` is reached; marks the lowest want[f] of each family as selected. */
+int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMILY_COUNT],
+                   int max_modes, gal_modes *out);
+
+void gal_modes_clear(gal_modes *m);
+
+#endif

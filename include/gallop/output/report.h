@@ -1,0 +1,21 @@
+/* report.h: the output files of `gallop modes` (DESIGN.md "Command line", "summary.json"), each
+ * written to a temporary file and renamed, so that nothing half-written is left on failure. */
+#ifndef GALLOP_REPORT_H
+#define GALLOP_REPORT_H
+
+#include <stdio.h>
+
+#include "gallop/modes/modes.h"
+#include "gallop/scene/scene.h"
+#include "gallop/statics/statics.h"
+
+/* DIR/summary.json, DIR/modes.csv, DIR/shapes.csv, DIR/equilibrium.csv; `want` is what the scene
+ * asked per family. */
+int gal_report_modes(const char *dir, const gal_scene *sc, const gal_equilibrium *eq,
+                     const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall_time_s);
+
+/* The table of `gallop modes` (equilibrium figures, then one line per selected mode). */
+void gal_report_modes_table(FILE *fp, const gal_scene *sc, const gal_equilibrium *eq,
+                            const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall_time_s);
+
+#endif

@@ -1,0 +1,69 @@
+/* rdyn.h: time integration of the reduced model (issue 6):
+ *   eta'' + (alpha + beta w^2) eta' + f(eta) = sum_q w_q [Phi(s_q)^T f_q + Phi_theta(s_q) m_q]
+ * with f the identified restoring force (reduced.h), Rayleigh damping projected exactly
+ * (Phi^T (alpha M + beta K0) Phi = alpha I + beta diag(w^2)), and the distributed loads evaluated at
+ * a fixed number of quadrature points along the span from the mode shapes, so that the cost of a
+ * step does not depend on the number of elements. GSL odeiv2 (Runge-Kutta-Prince-Dormand 8(9)),
+ * adaptive, with a relative tolerance. */
+#ifndef GALLOP_RDYN_H
+#define GALLOP_RDYN_H
+
+#include <gsl/gsl_odeiv2.h>
+
+#include "gallop/reduced/reduced.h"
+#include "gallop/rod/rod.h"
+
+/* A distributed load per unit length at a point of the span (N/m and N m/m): position r, velocity
+ * rdot, unit tangent tan, section reference direction d1, at time t and span abscissa x. Both models
+ * evaluate their loads through it. */
+typedef struct gal_pointload {
+    int (*eval)(void *ctx, double t, double x, const double r[3], const double rdot[3],
+                const double tan[3], const double d1[3], double f[3], double *m);
+    void *ctx;
+} gal_pointload;
+
+typedef struct gal_rdyn {
+    const gal_reduced *rm;
+    int r;
+    int nqp;             /* quadrature points */
+    double *wq;          /* nqp: weights, m of unstretched length */
+    double *req, *teq, *aeq;   /* 3 nqp: equilibrium position, tangent, reference director */
+    double *phr;         /* nqp x r x 3: mode shapes (translation) at the points */
+    double *phs;         /* nqp x r x 3: their derivative along s */
+    double *pht;         /* nqp x r: twist */
+    double *damp;        /* r: alpha + beta w^2 */
+    double *nt;          /* nqp: |dr/ds| at equilibrium */
+    int obs_offset;      /* >= 0: kinematics at the points from the model's expansion (7 observations
+                          * per point from this index on); -1: linear in the modes */
+    double *ob, *obr;    /* scratch: observations and their rates */
+    gal_pointload load;
+    double t;            /* s */
+    double *y;           /* 2r: eta, eta' */
+    double t_prev;       /* s: the step before (gal_rdyn_sample) */
+    double *y_prev;      /* 2r */
+    double *fr, *fl;     /* scratch */
+    gsl_odeiv2_system sys;
+    gsl_odeiv2_driver *drv;
+    long rhs_evaluations;
+    int status;          /* set by the right-hand side on a failure */
+    double tol;
+} gal_rdyn;
+
+gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, double rayleigh_mass,
+                         double rayleigh_stiffness, const gal_pointload *load, int nqp, double rel_tol,
+                         double h0, int obs_offset);
+/* The observations at the nqp quadrature points that gal_rdyn uses when obs_offset >= 0: per
+ * point its displacement (3), slope d u / ds (3) and twist (1), 7 nqp in all. */
+void gal_rdyn_quadrature_obs(const gal_rod *rod, int nqp, gal_obs *obs);
+gal_rdyn *gal_rdyn_free(gal_rdyn *d);
+/* Integrate to t_target (adaptive steps). GAL_EFAIL with time and reason on failure (NaN, step
+ * size underflow). */
+int gal_rdyn_advance(gal_rdyn *d, double t_target);
+/* The state at t_out (>= the last sample) by natural adaptive steps towards t_end and cubic
+ * Hermite interpolation (eta and eta' at both ends of the step that holds t_out): outputs at any
+ * rate cost no extra steps. y_out has 2r entries. */
+int gal_rdyn_sample(gal_rdyn *d, double t_out, double t_end, double *y_out);
+/* Steps taken and rejected by the adaptive control. */
+void gal_rdyn_counts(const gal_rdyn *d, long *steps, long *rejected);
+
+#endif

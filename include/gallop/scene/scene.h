@@ -1,0 +1,123 @@
+/* scene.h: a resolved scene (DESIGN.md "Scene files"): every key of every section, in SI units
+ * (angles converted to radians), defaults applied, validated. Read from an INI file with inih. */
+#ifndef GALLOP_SCENE_H
+#define GALLOP_SCENE_H
+
+#include <stdio.h>
+
+#define GAL_PATH_MAX 1024
+#define GAL_MAX_PROBES 16
+
+/* How the equilibrium is specified: exactly one of these in [span]. */
+typedef enum { GAL_SPEC_TENSION, GAL_SPEC_SAG, GAL_SPEC_LENGTH } gal_span_spec;
+
+typedef enum { GAL_TWIST_CLAMPED, GAL_TWIST_FREE } gal_end_twist;
+
+typedef enum {
+    GAL_TURB_NONE, GAL_TURB_KAIMAL, GAL_TURB_DAVENPORT, GAL_TURB_VON_KARMAN
+} gal_turbulence;
+
+/* Physical effects that a scene switches on or off ([effects]). */
+typedef enum {
+    GAL_FX_GRAVITY, GAL_FX_EXTENSION, GAL_FX_BENDING, GAL_FX_TORSION, GAL_FX_ICE_ECCENTRICITY,
+    GAL_FX_AERO_DRAG, GAL_FX_AERO_LIFT, GAL_FX_AERO_MOMENT, GAL_FX_AERO_DAMPING,
+    GAL_FX_TURBULENCE, GAL_FX_DAMPING, GAL_FX_COUNT
+} gal_effect;
+
+typedef struct gal_scene {
+    char path[GAL_PATH_MAX];      /* the scene file */
+    char name[256];               /* scene name: file name without directory and .ini */
+
+    struct {
+        double length;            /* m, horizontal distance between supports, > 0 */
+        double height_difference; /* m, right support minus left */
+        gal_span_spec spec;       /* which one of the three below was given */
+        double horizontal_tension;/* N (spec TENSION) */
+        double sag;               /* m, mid-span below the chord (spec SAG) */
+        double unstretched_length;/* m (spec LENGTH) */
+        gal_end_twist end_twist;
+    } span;
+
+    struct {
+        char name[128];           /* row of data/conductors.csv, or "" */
+        double diameter;          /* m */
+        double mass_per_length;   /* kg/m */
+        double axial_stiffness;   /* N (EA) */
+        double bending_stiffness; /* N m^2 (EI, both axes) */
+        double torsional_stiffness; /* N m^2/rad (GJ) */
+        double polar_inertia;     /* kg m^2/m (I_theta); default: the table row, else m d^2/8 */
+        double damping_ratio;     /* -, modal, all modes */
+    } conductor;
+
+    struct {
+        int present;              /* an [ice] section with a mass was given */
+        double mass_per_length;   /* kg/m */
+        double eccentricity;      /* m, offset of the ice mass centre from the axis */
+        double polar_inertia;     /* kg m^2/m, about the conductor axis; default
+                                     mass_per_length (diameter^2/4 + eccentricity^2) */
+        char aero_table[GAL_PATH_MAX]; /* CSV alpha_deg,cd,cl,cm, resolved path, or "" */
+        double attack_angle;      /* rad (scene: deg): the section's angle of attack at rest for a
+                                   * horizontal wind normal to the span (orientation of the ice) */
+    } ice;
+
+    struct {
+        double speed;             /* m/s, mean */
+        double yaw;               /* rad (scene: deg, 90 = normal to the span) */
+        double air_density;       /* kg/m^3 */
+        gal_turbulence turbulence;
+        double intensity;         /* -, turbulence intensity sigma_u / U */
+        double coherence_decay;   /* -, C in exp(-C f dx / U) */
+        long seed;
+    } wind;
+
+    int effect[GAL_FX_COUNT];     /* 1 on, 0 off */
+
+    struct {
+        int elements;             /* count, >= 4 */
+        int modes_vertical, modes_horizontal, modes_torsional; /* count per family, >= 0 */
+        double identification_amplitude; /* m; 0 = max(1 m, sag) */
+        double identification_twist;     /* rad (scene: deg) */
+    } model;
+
+    struct {
+        double duration;          /* s */
+        double time_step;         /* s; 0 = chosen by gallop */
+        int nprobes;
+        double probes[GAL_MAX_PROBES]; /* fractions of the span, in (0, 1) */
+        double wind_ramp;         /* s: the mean wind rises from 0 over this time */
+        double wind_reverse_time; /* s: the wind reverses at this time; 0 = never */
+        double output_interval;   /* s; 0 = chosen */
+        double rho_inf;           /* -, full model's numerical dissipation (1 = none) */
+        double tolerance;         /* -, reduced model's relative error per step */
+        int start_mean_wind;      /* 0: from rest, the wind ramped in; 1: from the equilibrium under
+                                   * the mean wind, the wind at full speed from the start */
+    } simulation;
+
+    struct {
+        char directory[GAL_PATH_MAX]; /* default out/<scene name> */
+    } output;
+} gal_scene;
+
+/* Effect names as written in scene files, indexed by gal_effect. */
+extern const char *const gal_effect_names[GAL_FX_COUNT];
+
+/* Read and validate a scene. `overrides` holds `n` strings "section.key=value" applied after
+ * the file (as if they were in it, reported as "--set"): a key given by --set replaces the file's
+ * value, which is then not checked; a --set of one of horizontal_tension / sag /
+ * unstretched_length replaces the file's choice among them; a relative ice.aero_table given by
+ * --set is taken from the current directory (from the scene's directory in the file).
+ * `conductors_csv` is the table that conductor.name refers to (NULL: $GALLOP_DATA/conductors.csv
+ * if GALLOP_DATA is set, else data/conductors.csv if it exists in the current directory, else
+ * conductors.csv in the parent of the scene's directory, since scenes live in data/scenes/).
+ * The table is read only when conductor.name is given; the scene's conductor keys override its
+ * row. An [ice] aero_table is read and checked here (gal_aero_table_read), whatever the command, so
+ * that a bad table is refused as bad input before anything is computed or written. Returns GAL_OK, or GAL_EINPUT / GAL_EIO (unreadable file) with a message
+ * "FILE:LINE: [section] key = value: what is wrong; allowed: range" ("--set: ..." for overrides,
+ * "FILE: ..." for a missing key). The ranges are listed in src/scene/scene.c (table `keys`). */
+int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides, int n,
+                   const char *conductors_csv);
+
+/* Print the resolved scene as INI (every key, with its unit in a comment). */
+void gal_scene_print(const gal_scene *sc, FILE *fp);
+
+#endif

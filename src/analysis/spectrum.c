@@ -1,0 +1,289 @@
+/* spectrum.c: Welch power spectral density (Welch 1967, with the one-sided density convention of
+ * spectrum.h), dominant peaks refined on the Hann-windowed DTFT of the whole record, amplitude
+ * measures and the orbit ellipse (principal axes of the displacement covariance). */
+#include "gallop/base/core.h"
+#include "gallop/analysis/spectrum.h"
+
+#include <fftw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+struct gal_welch {
+    size_t nseg, nfreq;
+    double *win;        /* periodic Hann, nseg */
+    double wss;         /* sum_j w_j^2 */
+    double *buf;        /* windowed segment, nseg */
+    fftw_complex *out;  /* its transform, nfreq */
+    double *psd;        /* scratch PSD for gal_spectrum_measure, nfreq */
+    fftw_plan plan;
+};
+
+size_t gal_spectrum_segment_choose(size_t n)
+{
+    if (n < 8) return n;
+    size_t p = 8;
+    if (n < 256) {
+        while (2 * p <= n) p *= 2;    /* largest power of two <= n */
+        return p;
+    }
+    p = 256;
+    while (9 * (2 * p) <= 2 * n) p *= 2;   /* 8 segments of 2p need n >= 4.5 (2p) */
+    return p;
+}
+
+gal_welch *gal_spectrum_welch_alloc(size_t nseg)
+{
+    if (nseg < 8) {
+        gal_error(GAL_EINPUT, "Welch segment of %zu samples: at least 8 needed", nseg);
+        return NULL;
+    }
+    gal_welch *w = calloc(1, sizeof *w);
+    if (!w) return gal_error(GAL_ENOMEM, "out of memory"), NULL;
+    w->nseg = nseg;
+    w->nfreq = nseg / 2 + 1;
+    w->win = malloc(nseg * sizeof *w->win);
+    w->psd = malloc(w->nfreq * sizeof *w->psd);
+    w->buf = fftw_malloc(nseg * sizeof *w->buf);
+    w->out = fftw_malloc(w->nfreq * sizeof *w->out);
+    if (!w->win || !w->psd || !w->buf || !w->out) {
+        gal_error(GAL_ENOMEM, "out of memory for a Welch segment of %zu samples", nseg);
+        return gal_spectrum_welch_free(w);
+    }
+    w->plan = fftw_plan_dft_r2c_1d((int)nseg, w->buf, w->out, FFTW_ESTIMATE);
+    if (!w->plan) {
+        gal_error(GAL_EFAIL, "FFTW could not plan a transform of %zu samples", nseg);
+        return gal_spectrum_welch_free(w);
+    }
+    w->wss = 0;
+    for (size_t j = 0; j < nseg; j++) {
+        w->win[j] = 0.5 - 0.5 * cos(2 * PI * (double)j / (double)nseg);
+        w->wss += w->win[j] * w->win[j];
+    }
+    return w;
+}
+
+gal_welch *gal_spectrum_welch_free(gal_welch *w)
+{
+    if (!w) return NULL;
+    if (w->plan) fftw_destroy_plan(w->plan);
+    fftw_free(w->buf);
+    fftw_free(w->out);
+    free(w->win);
+    free(w->psd);
+    free(w);
+    return NULL;
+}
+
+size_t gal_spectrum_welch_segment(const gal_welch *w) { return w->nseg; }
+size_t gal_spectrum_welch_nfreq(const gal_welch *w) { return w->nfreq; }
+
+int gal_spectrum_psd(gal_welch *w, const double *x, size_t n, double dt, double *psd, double *df,
+                     size_t *nsegments)
+{
+    size_t nseg = w->nseg, nf = w->nfreq, step = nseg / 2;
+    if (!(dt > 0) || !isfinite(dt)) return gal_error(GAL_EINPUT, "time step %g s: must be > 0", dt);
+    if (n < nseg)
+        return gal_error(GAL_EINPUT, "record of %zu samples is shorter than the Welch segment (%zu)",
+                         n, nseg);
+    for (size_t j = 0; j < n; j++)
+        if (!isfinite(x[j])) return gal_error(GAL_EINPUT, "sample %zu is not finite", j);
+    size_t nsg = (n - nseg) / step + 1;
+    double fs = 1 / dt;
+    for (size_t k = 0; k < nf; k++) psd[k] = 0;
+    for (size_t s = 0; s < nsg; s++) {
+        const double *xs = x + s * step;
+        double mean = 0;
+        for (size_t j = 0; j < nseg; j++) mean += xs[j];
+        mean /= (double)nseg;
+        for (size_t j = 0; j < nseg; j++) w->buf[j] = w->win[j] * (xs[j] - mean);
+        fftw_execute(w->plan);
+        for (size_t k = 0; k < nf; k++)
+            psd[k] += w->out[k][0] * w->out[k][0] + w->out[k][1] * w->out[k][1];
+    }
+    double scale = 1 / (fs * w->wss * (double)nsg);   /* P = c |X|^2 / (fs sum w^2), averaged */
+    for (size_t k = 0; k < nf; k++) {
+        int edge = (k == 0) || (nseg % 2 == 0 && k == nf - 1);
+        psd[k] *= (edge ? 1 : 2) * scale;
+    }
+    if (df) *df = fs / (double)nseg;
+    if (nsegments) *nsegments = nsg;
+    return GAL_OK;
+}
+
+/* ---- sub-bin refinement on the whole record ---- */
+
+/* |X(f)|^2 of the Hann-windowed centred record (spectrum.h, gal_spectrum_refine); the phasors
+ * e^{-i w j} and e^{i th j} run by rotation and are reset exactly every 1024 samples. */
+static double dtft2(const double *x, size_t n, double dt, double mean, double f, double *wsum)
+{
+    double om = 2 * PI * f * dt, th = 2 * PI / (double)n;
+    double cr = cos(om), sr = -sin(om), ct = cos(th), st = sin(th);
+    double re = 0, im = 0, ws = 0;
+    for (size_t j0 = 0; j0 < n; j0 += 1024) {
+        double zr = cos(om * (double)j0), zi = -sin(om * (double)j0);   /* e^{-i om j} */
+        double ur = cos(th * (double)j0), ui = sin(th * (double)j0);    /* e^{i th j} */
+        size_t j1 = j0 + 1024 < n ? j0 + 1024 : n;
+        for (size_t j = j0; j < j1; j++) {
+            double wj = 0.5 - 0.5 * ur;
+            double v = wj * (x[j] - mean);
+            re += v * zr;
+            im += v * zi;
+            ws += wj;
+            double t = zr * cr - zi * sr;
+            zi = zr * sr + zi * cr;
+            zr = t;
+            t = ur * ct - ui * st;
+            ui = ur * st + ui * ct;
+            ur = t;
+        }
+    }
+    if (wsum) *wsum = ws;
+    return re * re + im * im;
+}
+
+int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double halfwidth,
+                        double *f, double *amplitude)
+{
+    if (n < 2 || !(dt > 0)) return gal_error(GAL_EINPUT, "refine: %zu samples, dt %g s", n, dt);
+    double mean = 0;
+    for (size_t j = 0; j < n; j++) mean += (x[j] - mean) / (double)(j + 1);   /* running mean */
+    double fnyq = 0.5 / dt, h = 0.5 / ((double)n * dt);   /* grid: half a record bin */
+    double lo = f0 - halfwidth, hi = f0 + halfwidth;
+    if (lo < 0) lo = 0;
+    if (hi > fnyq) hi = fnyq;
+    if (!(hi >= lo)) return gal_error(GAL_EINPUT, "refine: no frequency range near %g Hz", f0);
+    /* grid search for the bracket; at most 513 points (a segment far shorter than the record,
+     * n > 200 nseg, gets a grid coarser than half a record bin) */
+    size_t ng = (size_t)ceil((hi - lo) / h) + 1;
+    if (ng > 513) ng = 513, h = (hi - lo) / 512;
+    double best = -1, fb = f0;
+    for (size_t g = 0; g < ng; g++) {
+        double fg = lo + (hi - lo) * (ng > 1 ? (double)g / (double)(ng - 1) : 0.5);
+        double p = dtft2(x, n, dt, mean, fg, NULL);
+        if (p > best) best = p, fb = fg;
+    }
+    /* golden section on [fb - h, fb + h]: the Hann main lobe (+-2 record bins) is unimodal there */
+    double a = fb - h, b = fb + h;
+    if (a < lo) a = lo;
+    if (b > hi) b = hi;
+    const double gr = 0.5 * (sqrt(5.0) - 1);
+    double c = b - gr * (b - a), d = a + gr * (b - a);
+    double pc = dtft2(x, n, dt, mean, c, NULL), pd = dtft2(x, n, dt, mean, d, NULL);
+    for (int it = 0; it < 60 && (b - a) > 1e-9 * h; it++) {
+        if (pc >= pd) {
+            b = d, d = c, pd = pc;
+            c = b - gr * (b - a);
+            pc = dtft2(x, n, dt, mean, c, NULL);
+        } else {
+            a = c, c = d, pc = pd;
+            d = a + gr * (b - a);
+            pd = dtft2(x, n, dt, mean, d, NULL);
+        }
+    }
+    double fr = 0.5 * (a + b), ws;
+    double p = dtft2(x, n, dt, mean, fr, &ws);
+    if (p < best) {   /* the grid point was better (edge of the range) */
+        fr = fb;
+        p = dtft2(x, n, dt, mean, fr, &ws);
+    }
+    *f = fr;
+    if (amplitude) *amplitude = 2 * sqrt(p) / ws;   /* A = 2 |X| / sum w */
+    return GAL_OK;
+}
+
+int gal_spectrum_peaks(const double *psd, size_t nfreq, double df, const double *x, size_t n,
+                       double dt, size_t kmax, gal_peak *peaks, size_t *npeaks)
+{
+    *npeaks = 0;
+    if (kmax > GAL_SPECTRUM_MAX_PEAKS) kmax = GAL_SPECTRUM_MAX_PEAKS;
+    if (nfreq < 3 || kmax == 0) return GAL_OK;
+    double pmax = 0;
+    for (size_t k = 1; k < nfreq; k++)
+        if (psd[k] > pmax) pmax = psd[k];
+    if (!(pmax > 0)) return GAL_OK;
+    size_t np = 0;
+    /* the kmax largest local maxima, kept sorted by decreasing PSD (insertion) */
+    for (size_t k = 1; k + 1 < nfreq; k++) {
+        if (!(psd[k] > psd[k - 1] && psd[k] >= psd[k + 1])) continue;
+        if (psd[k] < GAL_SPECTRUM_PEAK_FLOOR * pmax) continue;
+        size_t pos = np;
+        while (pos > 0 && peaks[pos - 1].psd < psd[k]) pos--;
+        if (pos >= kmax) continue;
+        size_t last = np < kmax ? np : kmax - 1;
+        for (size_t q = last; q > pos; q--) peaks[q] = peaks[q - 1];
+        peaks[pos].psd = psd[k];
+        peaks[pos].bin = k;
+        if (np < kmax) np++;
+    }
+    for (size_t q = 0; q < np; q++) {
+        double f0 = (double)peaks[q].bin * df;
+        int st = gal_spectrum_refine(x, n, dt, f0, 0.6 * df, &peaks[q].frequency,
+                                     &peaks[q].amplitude);
+        if (st) return st;
+    }
+    *npeaks = np;
+    return GAL_OK;
+}
+
+int gal_spectrum_measure(gal_welch *w, const double *x, size_t n, double dt, size_t kmax,
+                         double *psd, gal_measures *m)
+{
+    memset(m, 0, sizeof *m);
+    m->frequency = m->amplitude = NAN;
+    if (n == 0) return gal_error(GAL_EINPUT, "empty record");
+    double mean = 0, lo = x[0], hi = x[0], ss = 0;
+    for (size_t j = 0; j < n; j++) {
+        if (!isfinite(x[j])) return gal_error(GAL_EINPUT, "sample %zu is not finite", j);
+        mean += (x[j] - mean) / (double)(j + 1);   /* running mean: no overflow */
+        if (x[j] < lo) lo = x[j];
+        if (x[j] > hi) hi = x[j];
+    }
+    for (size_t j = 0; j < n; j++) ss += (x[j] - mean) * (x[j] - mean);   /* two-pass variance */
+    m->mean = mean;
+    m->rms = sqrt(ss / (double)n);
+    m->peak_to_peak = hi - lo;
+    double *p = psd ? psd : w->psd, df;
+    int st = gal_spectrum_psd(w, x, n, dt, p, &df, NULL);
+    if (st) return st;
+    if (m->rms <= 1e-13 * (fabs(mean) + 1e-300) || hi == lo) {   /* constant: no spectral line */
+        m->rms = hi == lo ? 0 : m->rms;
+        return GAL_OK;
+    }
+    st = gal_spectrum_peaks(p, w->nfreq, df, x, n, dt, kmax, m->peaks, &m->npeaks);
+    if (st) return st;
+    if (m->npeaks > 0) {
+        m->frequency = m->peaks[0].frequency;
+        m->amplitude = m->peaks[0].amplitude;
+    }
+    return GAL_OK;
+}
+
+int gal_spectrum_orbit(const double *y, const double *z, size_t n, gal_orbit *o)
+{
+    o->major = o->minor = o->tilt_deg = NAN;
+    if (n < 2) return gal_error(GAL_EINPUT, "orbit of %zu samples: at least 2 needed", n);
+    double my = 0, mz = 0;
+    for (size_t j = 0; j < n; j++) {
+        if (!isfinite(y[j]) || !isfinite(z[j]))
+            return gal_error(GAL_EINPUT, "orbit: sample %zu is not finite", j);
+        my += y[j], mz += z[j];
+    }
+    my /= (double)n, mz /= (double)n;
+    double cyy = 0, czz = 0, cyz = 0;
+    for (size_t j = 0; j < n; j++) {
+        double a = y[j] - my, b = z[j] - mz;
+        cyy += a * a, czz += b * b, cyz += a * b;
+    }
+    cyy /= (double)n, czz /= (double)n, cyz /= (double)n;
+    double mid = 0.5 * (cyy + czz), rad = hypot(0.5 * (cyy - czz), cyz);
+    double l1 = mid + rad, l2 = mid - rad;   /* eigenvalues of C, l1 >= l2 */
+    o->major = sqrt(2 * l1);
+    o->minor = sqrt(2 * (l2 > 0 ? l2 : 0));
+    double tilt = 0.5 * atan2(2 * cyz, cyy - czz) * 180 / PI;   /* in (-90, 90] */
+    if (tilt <= -90) tilt += 180;
+    o->tilt_deg = tilt;
+    return GAL_OK;
+}

@@ -1,0 +1,29 @@
+/* chol.h: sparse Cholesky factorization of a symmetric matrix given as its upper triangle in a
+ * gal_csc pattern, by CHOLMOD: symbolic analysis once, numeric factorization many times, with an
+ * optional diagonal shift (K + s D). */
+#ifndef GALLOP_CHOL_H
+#define GALLOP_CHOL_H
+
+#include <cholmod.h>
+
+#include "gallop/rod/rod.h"
+
+typedef struct gal_chol {
+    cholmod_common c;
+    cholmod_sparse *A;
+    cholmod_factor *L;
+    cholmod_dense *B, *X, *Y, *E;
+    int n;
+    long factorizations;   /* counter */
+    long solves;           /* counter */
+} gal_chol;
+
+gal_chol *gal_chol_alloc(const gal_csc *pattern);
+gal_chol *gal_chol_free(gal_chol *f);
+/* Factor K + shift * diag(d) (d NULL: the identity; shift 0: K alone). GAL_EFAIL when the
+ * matrix is not positive definite (the message says at which column). */
+int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d);
+/* x = (K + shift D)^-1 b; x and b may be the same array. */
+int gal_chol_solve(gal_chol *f, const double *b, double *x);
+
+#endif

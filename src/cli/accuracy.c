@@ -1,0 +1,83 @@
+/* cli/accuracy.c: `gallop accuracy SCENE [-o DIR] [--set s.k=v]... [--tolerance E] [--study NAME]...`
+ * (issue 7): what accuracy costs in time for the user's own span: accuracy.csv, summary.json and
+ * a table on stdout (DESIGN.md "Command line"). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "gallop.h"
+#include "gallop/analysis/accuracy.h"
+#include "gallop/scene/scene.h"
+
+#define MAX_ARGS 1024
+
+static int bad(const char *what, const char *arg)
+{
+    fprintf(stderr, "gallop accuracy: %s%s%s\nusage: gallop accuracy SCENE [-o DIR] [--set section.key=value ...] "
+            "[--tolerance E] [--study NAME ...]\n  studies: elements, modes, time_step, tolerance, effects\n",
+            what, arg ? " " : "", arg ? arg : "");
+    return 2;
+}
+
+/* NAME or a comma list of names into the study mask */
+static int add_studies(const char *list, unsigned *mask)
+{
+    char buf[256];
+    if (strlen(list) >= sizeof buf) return bad("--study: too long:", list);
+    strcpy(buf, list);
+    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int k = -1;
+        for (int s = 0; s < GAL_ACC_NSTUDY; s++)
+            if (!strcmp(t, gal_acc_study_names[s])) k = s;
+        if (k < 0) return bad("--study: unknown study", t);
+        *mask |= 1u << k;
+    }
+    return 0;
+}
+
+int gal_cli_accuracy(int argc, char **argv)
+{
+    gal_acc_opts o;
+    gal_accuracy_default_opts(&o);
+    unsigned mask = 0;
+    /* the command's own options (--study is repeatable); the rest go to the scene loader */
+    char *rest[MAX_ARGS];
+    int nrest = 0;
+    if (argc > MAX_ARGS) return bad("too many arguments", NULL);
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (i > 0 && (!strcmp(a, "--study") || !strcmp(a, "--tolerance"))) {
+            if (i + 1 >= argc) return bad("missing value after", a);
+            const char *v = argv[++i];
+            if (!strcmp(a, "--study")) {
+                int rc = add_studies(v, &mask);
+                if (rc) return rc;
+            } else {
+                char *end;
+                o.tolerance = strtod(v, &end);
+                if (end == v || *end || !(o.tolerance > 0 && o.tolerance < 1))
+                    return bad("--tolerance: want a relative error in (0, 1), got", v);
+            }
+        } else {
+            rest[nrest++] = argv[i];
+        }
+    }
+    if (mask) o.studies = mask;
+    o.progress = isatty(2);
+    gal_scene sc;
+    const char *outdir = NULL;
+    int rc = gal_cli_load_scene(nrest, rest, &sc, &outdir);
+    if (rc) return rc;
+    gal_acc_result r;
+    int st = gal_accuracy_run(&sc, &o, &r);
+    if (!st) {
+        gal_accuracy_print(stdout, &r);
+        st = gal_accuracy_write(outdir, &sc, &r);
+        if (!st) printf("files: %s/{accuracy.csv,summary.json}\n", outdir);
+    }
+    if (st) fprintf(stderr, "gallop accuracy: %s\n", gal_error_message());
+    gal_accuracy_clear(&r);
+    return gal_exit_code(st);
+}

@@ -1,0 +1,254 @@
+/* dynamics.c: generalized-alpha integration of the full rod (paper Eq. 9) with Newton's method.
+ * Residual at the generalized mid-point (forces interpolated, as in HHT):
+ *   R = M a_m + C v_f + (1-af) g(q1) + af g(q0) - (1-af) F1 - af F0,
+ *   a_m = (1-am) a1 + am a0,  v_f = (1-af) v1 + af v0,
+ *   q1 = q0 + h v0 + h^2 ((1/2 - beta) a0 + beta a1),  v1 = v0 + h ((1-gamma) a0 + gamma a1).
+ * Jacobian in q1: (1-am)/(beta h^2) M + (1-af) gamma/(beta h) C + (1-af) K(q1); the loads'
+ * dependence on q and v is left out of it (it changes the convergence rate, not the solution). */
+#include "gallop/full/dynamics.h"
+#include "gallop/base/core.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/chol.h"
+
+void gal_dyn_default_opts(gal_dyn_opts *o)
+{
+    o->h = 0.01;
+    o->rho_inf = 1.0;
+    o->rayleigh_mass = 0;
+    o->rayleigh_stiffness = 0;
+    o->newton_tol = 1e-8;
+    o->max_newton = 20;
+    o->max_halvings = 6;
+}
+
+gal_dyn *gal_dyn_free(gal_dyn *d)
+{
+    if (d) {
+        free(d->q); free(d->v); free(d->a); free(d->mdiag);
+        gal_csc_free(d->K0);
+        gal_csc_free(d->S);
+        gal_chol_free(d->chol);
+        free(d->q1); free(d->v1); free(d->a1); free(d->fint0); free(d->fint1); free(d->fext0);
+        free(d->fext1); free(d->r); free(d->dq); free(d->tmp); free(d->Cv);
+        free(d);
+    }
+    return NULL;
+}
+
+/* Cv = C v over free dofs (v configuration-sized), C = alpha M + beta K0 */
+static void damping_force(gal_dyn *d, const double *vq, double *Cv)
+{
+    const gal_rod *rod = d->rod;
+    int n = rod->ndof;
+    if (d->o.rayleigh_mass == 0 && d->o.rayleigh_stiffness == 0) {
+        memset(Cv, 0, (size_t)n * sizeof(double));
+        return;
+    }
+    gal_rod_gather(rod, vq, d->tmp);
+    gal_csc_symv(d->K0, d->tmp, Cv);
+    gal_rod_mass_mult(rod, d->tmp, d->r); /* r is scratch here */
+    for (int j = 0; j < n; j++) Cv[j] = d->o.rayleigh_stiffness * Cv[j] + d->o.rayleigh_mass * d->r[j];
+}
+
+static int external(gal_dyn *d, double t, const double *q, const double *v, double *f)
+{
+    memset(f, 0, (size_t)d->rod->nq * sizeof(double));
+    if (!d->force.eval) return GAL_OK;
+    d->force_evaluations++;
+    return d->force.eval(d->force.ctx, t, q, v, f);
+}
+
+gal_dyn *gal_dyn_alloc(const gal_rod *rod, const double *q0, const double *v0, const gal_dyn_opts *o,
+                       const gal_force *force)
+{
+    gal_dyn *d = calloc(1, sizeof *d);
+    if (!d) return NULL;
+    d->rod = rod;
+    if (o) d->o = *o;
+    else gal_dyn_default_opts(&d->o);
+    if (force) d->force = *force;
+    double rho = d->o.rho_inf;
+    if (!(rho >= 0 && rho <= 1) || !(d->o.h > 0)) {
+        gal_error(GAL_EINPUT, "dynamics: time step %g s and rho_inf %g; allowed: h > 0, 0 <= rho_inf <= 1", d->o.h, rho);
+        return gal_dyn_free(d);
+    }
+    d->am = (2 * rho - 1) / (rho + 1);
+    d->af = rho / (rho + 1);
+    d->gamma = 0.5 - d->am + d->af;
+    d->beta = 0.25 * (1 - d->am + d->af) * (1 - d->am + d->af);
+    int nq = rod->nq, n = rod->ndof;
+    size_t bq = (size_t)nq * sizeof(double), bn = (size_t)n * sizeof(double);
+    d->q = malloc(bq), d->v = calloc(nq, sizeof(double)), d->a = calloc(nq, sizeof(double));
+    d->q1 = malloc(bq), d->v1 = calloc(nq, sizeof(double)), d->a1 = calloc(nq, sizeof(double)); /* fixed dofs stay 0 */
+    d->fint0 = malloc(bq), d->fint1 = malloc(bq), d->fext0 = malloc(bq), d->fext1 = malloc(bq);
+    d->mdiag = malloc(bn), d->r = malloc(bn), d->dq = malloc(bn), d->tmp = malloc(bn), d->Cv = malloc(bn);
+    d->K0 = gal_csc_clone(rod->K);
+    d->S = gal_csc_clone(rod->K);
+    if (!d->q || !d->v || !d->a || !d->q1 || !d->v1 || !d->a1 || !d->fint0 || !d->fint1 || !d->fext0 ||
+        !d->fext1 || !d->mdiag || !d->r || !d->dq || !d->tmp || !d->Cv || !d->K0 || !d->S) {
+        gal_error(GAL_ENOMEM, "dynamics: out of memory");
+        return gal_dyn_free(d);
+    }
+    d->chol = gal_chol_alloc(rod->K);
+    if (!d->chol) return gal_dyn_free(d);
+    memcpy(d->q, q0, bq);
+    if (v0) memcpy(d->v, v0, bq);
+    for (int k = 0; k < nq; k++)
+        if (rod->dof[k] < 0) d->v[k] = 0;
+    gal_rod_mass_diag(rod, d->mdiag);
+    if (gal_rod_eval(rod, q0, NULL, d->fint0, d->K0) != GAL_OK) return gal_dyn_free(d);
+    if (external(d, 0.0, d->q, d->v, d->fext0) != GAL_OK) return gal_dyn_free(d);
+    /* M a0 = F0 - g(q0) - C v0 */
+    damping_force(d, d->v, d->Cv);
+    for (int j = 0; j < n; j++) {
+        int k = rod->free_q[j];
+        d->dq[j] = d->fext0[k] - d->fint0[k] - d->Cv[j];
+    }
+    if (gal_chol_factor(d->chol, rod->M, 0, NULL) != GAL_OK || gal_chol_solve(d->chol, d->dq, d->tmp) != GAL_OK) {
+        gal_error(GAL_EFAIL, "dynamics: the mass matrix is not positive definite");
+        return gal_dyn_free(d);
+    }
+    for (int j = 0; j < n; j++) d->a[rod->free_q[j]] = d->tmp[j];
+    d->energy0 = gal_dyn_energy(d);
+    return d;
+}
+
+double gal_dyn_energy(const gal_dyn *d)
+{
+    double U = 0, T = 0;
+    gal_rod_eval(d->rod, d->q, &U, NULL, NULL);
+    int n = d->rod->ndof;
+    double *vf = malloc((size_t)2 * n * sizeof(double));
+    if (!vf) return NAN;
+    gal_rod_gather(d->rod, d->v, vf);
+    gal_rod_mass_mult(d->rod, vf, vf + n);
+    for (int j = 0; j < n; j++) T += 0.5 * vf[j] * vf[n + j];
+    free(vf);
+    return T + U;
+}
+
+/* One step of size h from the current state; on failure the state is unchanged. */
+static int try_step(gal_dyn *d, double h)
+{
+    const gal_rod *rod = d->rod;
+    int n = rod->ndof, nq = rod->nq, st;
+    double am = d->am, af = d->af, be = d->beta, ga = d->gamma;
+    double t1 = d->t + h;
+    /* predictor: constant acceleration */
+    memcpy(d->q1, d->q, (size_t)nq * sizeof(double));
+    memcpy(d->a1, d->a, (size_t)nq * sizeof(double));
+    for (int j = 0; j < n; j++) {
+        int k = rod->free_q[j];
+        d->q1[k] = d->q[k] + h * d->v[k] + h * h * ((0.5 - be) * d->a[k] + be * d->a1[k]);
+    }
+    double cm = (1 - am) / (be * h * h), cc = (1 - af) * ga / (be * h);
+    double scale = 0;
+    for (int j = 0; j < n; j++) scale = fmax(scale, fabs(d->fint0[rod->free_q[j]]) + fabs(d->fext0[rod->free_q[j]]));
+    /* a force scale for the convergence test: the weight of one node at least */
+    for (int j = 0; j < n; j++) scale = fmax(scale, d->mdiag[j] * 9.81);
+    /* not below the round-off of the elastic forces: positions known to eps L, times the axial
+     * stiffness of an element EA / l0 */
+    double tol = fmax(d->o.newton_tol * scale, 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) *
+                                                   rod->p.EA / rod->l0[0]);
+    for (int it = 0; it < d->o.max_newton; it++) {
+        /* a1, v1 from q1 */
+        for (int j = 0; j < n; j++) {
+            int k = rod->free_q[j];
+            d->a1[k] = (d->q1[k] - d->q[k] - h * d->v[k]) / (be * h * h) - (0.5 - be) / be * d->a[k];
+            d->v1[k] = d->v[k] + h * ((1 - ga) * d->a[k] + ga * d->a1[k]);
+        }
+        if ((st = gal_rod_eval(rod, d->q1, NULL, d->fint1, d->S))) return st;
+        if ((st = external(d, t1, d->q1, d->v1, d->fext1))) return st;
+        /* residual */
+        double rn = 0;
+        {
+            /* v_f = (1-af) v1 + af v0 over the free dofs (dq is scratch until the solve) */
+            for (int j = 0; j < n; j++) {
+                int k = rod->free_q[j];
+                d->dq[j] = (1 - af) * d->v1[k] + af * d->v[k];
+            }
+            /* C v_f */
+            if (d->o.rayleigh_mass != 0 || d->o.rayleigh_stiffness != 0) {
+                gal_csc_symv(d->K0, d->dq, d->Cv);
+                gal_rod_mass_mult(rod, d->dq, d->tmp);
+                for (int j = 0; j < n; j++)
+                    d->Cv[j] = d->o.rayleigh_stiffness * d->Cv[j] + d->o.rayleigh_mass * d->tmp[j];
+            } else {
+                memset(d->Cv, 0, (size_t)n * sizeof(double));
+            }
+            /* M a_m */
+            for (int j = 0; j < n; j++) {
+                int k = rod->free_q[j];
+                d->dq[j] = (1 - am) * d->a1[k] + am * d->a[k];
+            }
+            gal_rod_mass_mult(rod, d->dq, d->tmp);
+            for (int j = 0; j < n; j++) {
+                int k = rod->free_q[j];
+                d->r[j] = d->tmp[j] + d->Cv[j] + (1 - af) * d->fint1[k] + af * d->fint0[k] -
+                          (1 - af) * d->fext1[k] - af * d->fext0[k];
+                rn = fmax(rn, fabs(d->r[j]));
+            }
+        }
+        if (!isfinite(rn)) {
+            /* name the term that went wrong */
+            const char *term = "inertia";
+            for (int j = 0; j < n; j++) {
+                int k = rod->free_q[j];
+                if (!isfinite(d->fext1[k])) { term = "aerodynamic load"; break; }
+                if (!isfinite(d->fint1[k])) { term = "elastic force"; break; }
+                if (!isfinite(d->Cv[j])) { term = "damping force"; break; }
+            }
+            return gal_error(GAL_EFAIL, "dynamics: the residual is not finite at t = %.6g s (step %ld, "
+                             "Newton iteration %d): the %s", t1, d->steps + 1, it, term);
+        }
+        d->newton_iterations++;
+        if (rn <= tol && it > 0) {
+            /* accept */
+            memcpy(d->q, d->q1, (size_t)nq * sizeof(double));
+            memcpy(d->v, d->v1, (size_t)nq * sizeof(double));
+            memcpy(d->a, d->a1, (size_t)nq * sizeof(double));
+            double *sw = d->fint0; d->fint0 = d->fint1; d->fint1 = sw;
+            sw = d->fext0; d->fext0 = d->fext1; d->fext1 = sw;
+            d->t = t1;
+            return GAL_OK;
+        }
+        /* S = cm M + cc C + (1-af) K(q1) */
+        for (int p = 0; p < d->S->nnz; p++)
+            d->S->val[p] = (1 - af) * d->S->val[p] + cc * d->o.rayleigh_stiffness * d->K0->val[p] +
+                           (cm + cc * d->o.rayleigh_mass) * rod->M->val[p];
+        d->factorizations++;
+        if ((st = gal_chol_factor(d->chol, d->S, 0, NULL)))
+            return gal_error(GAL_EFAIL, "dynamics: the iteration matrix is not positive definite at t = %.6g s", t1);
+        if ((st = gal_chol_solve(d->chol, d->r, d->dq))) return st;
+        for (int j = 0; j < n; j++) d->q1[rod->free_q[j]] -= d->dq[j];
+    }
+    return gal_error(GAL_EFAIL, "dynamics: Newton did not converge in %d iterations at t = %.6g s (step %ld)",
+                     d->o.max_newton, t1, d->steps + 1);
+}
+
+int gal_dyn_step(gal_dyn *d)
+{
+    double h = d->o.h, done = 0;
+    int halvings = 0;
+    while (done < d->o.h * (1 - 1e-12)) {
+        double hh = fmin(h, d->o.h - done);
+        int st = try_step(d, hh);
+        if (st == GAL_OK) {
+            done += hh;
+            continue;
+        }
+        if (st == GAL_ENOMEM) return st;
+        d->rejected_steps++;
+        if (++halvings > d->o.max_halvings)
+            return gal_error(GAL_EFAIL, "dynamics: step failed at t = %.6g s after %d halvings of the time "
+                             "step (h = %.3g s): %s", d->t, d->o.max_halvings, hh, gal_error_message());
+        h = 0.5 * hh;
+    }
+    d->steps++;
+    return GAL_OK;
+}

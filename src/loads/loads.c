@@ -1,0 +1,110 @@
+/* loads.c: quasi-steady aerodynamic loads in a ramped, turbulent, possibly reversing wind. */
+#include "gallop/loads/loads.h"
+#include "gallop/base/core.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gallop/statics/statics.h"
+
+void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
+{
+    double U = L->speed;
+    if (L->ramp_time > 0 && t < L->ramp_time) U *= 0.5 * (1 - cos(GAL_PI * t / L->ramp_time));
+    if (L->u && L->nt > 1 && L->nx > 0) {
+        /* bilinear in (t, x); the field repeats after its duration */
+        double ft = t / L->dt, period = (double)(L->nt - 1);
+        ft = fmod(ft, period);
+        if (ft < 0) ft += period;
+        int k = (int)ft;
+        if (k >= L->nt - 1) k = L->nt - 2;
+        double a = ft - k;
+        double fx = L->nx > 1 ? (x - L->x0) / L->dx : 0;
+        if (fx < 0) fx = 0;
+        if (fx > L->nx - 1) fx = L->nx - 1;
+        int j = (int)fx;
+        if (j >= L->nx - 1) j = L->nx > 1 ? L->nx - 2 : 0;
+        double b = L->nx > 1 ? fx - j : 0;
+        const double *u0 = L->u + (size_t)k * L->nx, *u1 = u0 + L->nx;
+        int j1 = L->nx > 1 ? j + 1 : j;
+        double u = (1 - a) * ((1 - b) * u0[j] + b * u0[j1]) + a * ((1 - b) * u1[j] + b * u1[j1]);
+        double ramp = (L->ramp_time > 0 && t < L->ramp_time) ? 0.5 * (1 - cos(GAL_PI * t / L->ramp_time)) : 1.0;
+        U += ramp * u;
+    }
+    if (L->reverse_time > 0 && t >= L->reverse_time) U = -U;
+    for (int k = 0; k < 3; k++) w[k] = U * L->dir[k];
+}
+
+int gal_loads_point(void *ctx, double t, double x, const double r[3], const double rdot[3],
+                    const double tan[3], const double d1[3], double f[3], double *m)
+{
+    const gal_loads *L = ctx;
+    (void)r;
+    double w[3];
+    gal_loads_wind(L, t, x, w);
+    if (L->aero_damping)
+        for (int k = 0; k < 3; k++) w[k] -= rdot[k];
+    if (L->attack_angle != 0) {
+        /* the section's reference direction turned by -attack_angle about the tangent: the
+         * angle of attack, measured from it, grows by attack_angle */
+        double c = cos(L->attack_angle), s = sin(L->attack_angle), b[3], d[3];
+        b[0] = tan[1] * d1[2] - tan[2] * d1[1];
+        b[1] = tan[2] * d1[0] - tan[0] * d1[2];
+        b[2] = tan[0] * d1[1] - tan[1] * d1[0];
+        for (int k = 0; k < 3; k++) d[k] = c * d1[k] - s * b[k];
+        return gal_aero_load(L->table, tan, d, w, L->rho, L->diam, L->flags, f, m);
+    }
+    return gal_aero_load(L->table, tan, d1, w, L->rho, L->diam, L->flags, f, m);
+}
+
+int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f)
+{
+    const gal_loads *L = ctx;
+    const gal_rod *rod = L->rod;
+    int nel = rod->p.elements, nn = rod->nn;
+    for (int j = 0; j < nel; j++) {
+        double r[3], rd[3], tg[3], d1[3], fe[3] = {0, 0, 0}, me = 0;
+        for (int k = 0; k < 3; k++) {
+            r[k] = 0.5 * (q[3 * j + k] + q[3 * (j + 1) + k]);
+            rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
+        }
+        gal_rod_material_frame(rod, q, j, tg, d1);
+        int st = gal_loads_point(ctx, t, r[0], r, rd, tg, d1, fe, &me);
+        if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
+        double l0 = rod->l0[j];
+        for (int k = 0; k < 3; k++) {
+            f[3 * j + k] += 0.5 * l0 * fe[k];
+            f[3 * (j + 1) + k] += 0.5 * l0 * fe[k];
+        }
+        if (rod->p.torsion) f[3 * nn + j] += l0 * me;
+    }
+    return GAL_OK;
+}
+
+int gal_loads_static(gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations)
+{
+    /* Picard on the follower load: solve grad U(q) = F(q) with F frozen, update F, repeat. The
+     * load is evaluated with the full mean wind (after the ramp) and no turbulence or motion. */
+    int nq = rod->nq, st = GAL_OK;
+    double *f = malloc((size_t)nq * sizeof(double)), *qold = malloc((size_t)nq * sizeof(double));
+    double *v = calloc((size_t)nq, sizeof(double));
+    if (!f || !qold || !v) { free(f); free(qold); free(v); return gal_error(GAL_ENOMEM, "out of memory"); }
+    gal_loads Ls = *L;
+    Ls.u = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0, Ls.rod = rod;
+    double scale = fmax(rod->p.length, 1.0);
+    int it;
+    for (it = 0; it < max_iter; it++) {
+        memset(f, 0, (size_t)nq * sizeof(double));
+        if ((st = gal_loads_full(&Ls, 0.0, q, v, f))) break;
+        memcpy(qold, q, (size_t)nq * sizeof(double));
+        if ((st = gal_statics_solve_loaded(rod, q, f, force_tol, 60, iterations))) break;
+        double dmax = 0;
+        for (int k = 0; k < nq; k++) dmax = fmax(dmax, fabs(q[k] - qold[k]) / (k < 3 * rod->nn ? scale : 1.0));
+        if (dmax < 1e-11) break;
+    }
+    if (!st && it >= max_iter)
+        st = gal_error(GAL_EFAIL, "statics under the mean wind: the load iteration did not converge in %d iterations", max_iter);
+    free(f); free(qold); free(v);
+    return st;
+}

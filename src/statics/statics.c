@@ -1,0 +1,292 @@
+/* statics.c: sagged equilibrium of the rod (paper Eq. 9 with no motion: grad U = 0) by Newton's
+ * method from the elastic catenary, with an outer secant iteration on the unstretched length
+ * when the span is specified by its horizontal tension or sag. */
+#include "gallop/statics/statics.h"
+#include "gallop/base/core.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/chol.h"
+
+
+void gal_statics_default_opts(gal_statics_opts *o)
+{
+    o->force_tol = 1e-10;
+    o->max_newton = 50;
+    o->max_length_iter = 30;
+}
+
+void gal_equilibrium_clear(gal_equilibrium *eq)
+{
+    gal_rod_free(eq->rod);
+    free(eq->q);
+    memset(eq, 0, sizeof *eq);
+}
+
+double gal_rod_sag(const gal_rod *rod, const double *q)
+{
+    double L = rod->p.length, h = rod->p.height_difference;
+    int nn = rod->nn, i = 1;
+    while (i < nn - 2 && q[3 * (i + 1)] < 0.5 * L) i++;
+    /* quadratic through nodes i-1, i, i+1 (Lagrange form in x) */
+    double x0 = q[3 * (i - 1)], x1 = q[3 * i], x2 = q[3 * (i + 1)];
+    double z0 = q[3 * (i - 1) + 2], z1 = q[3 * i + 2], z2 = q[3 * (i + 1) + 2], x = 0.5 * L;
+    double z = z0 * (x - x1) * (x - x2) / ((x0 - x1) * (x0 - x2)) +
+               z1 * (x - x0) * (x - x2) / ((x1 - x0) * (x1 - x2)) +
+               z2 * (x - x0) * (x - x1) / ((x2 - x0) * (x2 - x1));
+    return 0.5 * h - z;
+}
+
+typedef struct {
+    gal_rod *rod;
+    gal_chol *chol;
+    double *g, *gt, *r, *d, *qt, *mdiag;
+    double ftol;
+    const double *fext;   /* configuration-sized dead load, or NULL */
+} newton_ws;
+
+/* Total potential U(q) - fext . q and its gradient (the load is dead: it does not follow q). */
+static int eval_total(newton_ws *w, const double *q, double *U, double *g, gal_csc *K)
+{
+    int st = gal_rod_eval(w->rod, q, U, g, K);
+    if (st || !w->fext) return st;
+    for (int j = 0; j < w->rod->ndof; j++) {
+        int k = w->rod->free_q[j];
+        if (U) *U -= w->fext[k] * q[k];
+        if (g) g[k] -= w->fext[k];
+    }
+    return GAL_OK;
+}
+
+static double inf_norm_free(const gal_rod *rod, const double *g)
+{
+    double m = 0;
+    for (int k = 0; k < rod->ndof; k++) m = fmax(m, fabs(g[rod->free_q[k]]));
+    return m;
+}
+
+/* Newton with line search on the energy; q updated in place. */
+static int newton(newton_ws *w, double *q, int max_iter, int *iters, double *res)
+{
+    gal_rod *rod = w->rod;
+    int n = rod->ndof, nq = rod->nq;
+    double U;
+    int st = eval_total(w, q, &U, w->g, rod->K);
+    if (st) return st;
+    for (int it = 0; ; it++) {
+        double rn = inf_norm_free(rod, w->g);
+        *res = rn;
+        if (!isfinite(rn)) return gal_error(GAL_EFAIL, "statics: the residual force is not finite (Newton iteration %d)", it);
+        if (rn <= w->ftol) { *iters += it; return GAL_OK; }
+        if (it >= max_iter) {
+            *iters += it;
+            return gal_error(GAL_EFAIL, "statics: Newton did not converge in %d iterations (residual %.3g N, tolerance %.3g N)",
+                             max_iter, rn, w->ftol);
+        }
+        /* factor K, with a growing shift K + mu M where it is not positive definite */
+        gal_rod_mass_diag(rod, w->mdiag);
+        double kmax = 0;
+        for (int j = 0; j < n; j++) kmax = fmax(kmax, rod->K->val[rod->K->diag[j]] / w->mdiag[j]);
+        double mu = 0;
+        for (int tries = 0; ; tries++) {
+            if (gal_chol_factor(w->chol, rod->K, mu, w->mdiag) == GAL_OK) break;
+            if (tries >= 8) return gal_error(GAL_EFAIL, "statics: the tangent stiffness stays indefinite at Newton iteration %d", it);
+            mu = mu == 0 ? 1e-8 * kmax : mu * 100;
+        }
+        gal_rod_gather(rod, w->g, w->r);
+        if ((st = gal_chol_solve(w->chol, w->r, w->d))) return st;
+        double slope = 0;
+        for (int j = 0; j < n; j++) w->d[j] = -w->d[j], slope += w->r[j] * w->d[j];
+        /* backtracking: Armijo on U, or a smaller residual (near convergence U stalls in
+         * round-off) */
+        double a = 1.0, Ut = 0;
+        int accepted = 0;
+        for (int ls = 0; ls < 40; ls++, a *= 0.5) {
+            memcpy(w->qt, q, (size_t)nq * sizeof(double));
+            for (int j = 0; j < n; j++) w->qt[rod->free_q[j]] += a * w->d[j];
+            if (eval_total(w, w->qt, &Ut, w->gt, NULL) != GAL_OK) continue;
+            if (Ut <= U + 1e-4 * a * slope || inf_norm_free(rod, w->gt) < rn) {
+                accepted = 1;
+                break;
+            }
+        }
+        if (!accepted)
+            return gal_error(GAL_EFAIL, "statics: the line search failed at Newton iteration %d (residual %.3g N)", it, rn);
+        memcpy(q, w->qt, (size_t)nq * sizeof(double));
+        if ((st = eval_total(w, q, &U, w->g, rod->K))) return st;
+    }
+}
+
+int gal_statics_solve_loaded(gal_rod *rod, double *q, const double *fext, double force_tol, int max_newton,
+                            int *iterations)
+{
+    int n = rod->ndof, nq = rod->nq, st;
+    newton_ws w = {0};
+    w.rod = rod, w.fext = fext, w.ftol = force_tol;
+    w.chol = gal_chol_alloc(rod->K);
+    w.g = malloc((size_t)nq * sizeof(double)), w.gt = malloc((size_t)nq * sizeof(double));
+    w.qt = malloc((size_t)nq * sizeof(double)), w.r = malloc((size_t)n * sizeof(double));
+    w.d = malloc((size_t)n * sizeof(double)), w.mdiag = malloc((size_t)n * sizeof(double));
+    double res;
+    int it = 0;
+    if (!w.chol || !w.g || !w.gt || !w.qt || !w.r || !w.d || !w.mdiag) st = gal_error(GAL_ENOMEM, "statics: out of memory");
+    else st = newton(&w, q, max_newton, &it, &res);
+    if (iterations) *iterations += it;
+    gal_chol_free(w.chol);
+    free(w.g); free(w.gt); free(w.qt); free(w.r); free(w.d); free(w.mdiag);
+    return st;
+}
+
+int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double value,
+                      const gal_statics_opts *opts_in, gal_equilibrium *eq)
+{
+    double t0 = gal_wall_time();
+    gal_statics_opts opts;
+    if (opts_in) opts = *opts_in;
+    else gal_statics_default_opts(&opts);
+    memset(eq, 0, sizeof *eq);
+
+    /* the elastic catenary: unknowns and the start */
+    gal_catenary *cat = &eq->cat;
+    cat->L = p->length, cat->h = p->height_difference, cat->EA = p->EA;
+    cat->w = p->mass * p->gravity;
+    int st = gal_catenary_solve(cat, (int)spec, value);
+    if (st) return st;
+
+    gal_rod_params rp = *p;
+    rp.unstretched_length = cat->L0;
+    int nel = p->elements, nn = nel + 1;
+    int nq = 3 * nn + (p->torsion ? nel : 0);
+    double *q = calloc((size_t)nq, sizeof(double));
+    if (!q) return gal_error(GAL_ENOMEM, "statics: out of memory");
+    for (int i = 0; i < nn; i++) {
+        double x, z;
+        gal_catenary_point(cat, cat->L0 * i / nel, &x, &z, NULL);
+        q[3 * i] = x, q[3 * i + 2] = z;
+    }
+    q[3 * nel] = p->length, q[3 * nel + 2] = p->height_difference; /* supports exactly */
+    gal_rod *rod = gal_rod_alloc(&rp, q);
+    if (!rod) { free(q); return GAL_EINPUT; }
+    eq->rod = rod, eq->q = q;
+
+    newton_ws w = {0};
+    w.rod = rod;
+    w.chol = gal_chol_alloc(rod->K);
+    int n = rod->ndof;
+    w.g = malloc((size_t)nq * sizeof(double));
+    w.gt = malloc((size_t)nq * sizeof(double));
+    w.qt = malloc((size_t)nq * sizeof(double));
+    w.r = malloc((size_t)n * sizeof(double));
+    w.d = malloc((size_t)n * sizeof(double));
+    w.mdiag = malloc((size_t)n * sizeof(double));
+    double *qsave = malloc((size_t)nq * sizeof(double));
+    if (!w.chol || !w.g || !w.gt || !w.qt || !w.r || !w.d || !w.mdiag || !qsave) {
+        st = gal_error(GAL_ENOMEM, "statics: out of memory for %d elements", nel);
+        goto done;
+    }
+    double Tcat = sqrt(cat->H * cat->H + cat->V0 * cat->V0);
+    /* the tolerance: relative to the force scale, but not below the round-off of positions
+     * (eps L) times the axial stiffness of one element (EA / l0) */
+    w.ftol = fmax(opts.force_tol * fmax(fmax(Tcat, cat->w * cat->L0), 1.0),
+                  20 * DBL_EPSILON * fmax(p->length, fabs(p->height_difference)) * p->EA * nel / cat->L0);
+    double res = 0;
+
+    /* inner solve at fixed L0; on failure, continuation on the bending stiffness from 0 (where
+     * the catenary start is nearly exact) */
+    memcpy(qsave, q, (size_t)nq * sizeof(double));
+    st = newton(&w, q, opts.max_newton, &eq->newton_iterations, &res);
+    if (st != GAL_OK && p->EI > 0) {
+        memcpy(q, qsave, (size_t)nq * sizeof(double));
+        double lam = 0, dl = 0.125;
+        st = GAL_OK;
+        while (lam < 1 && st == GAL_OK) {
+            double next = fmin(1.0, lam + dl);
+            rod->p.EI = next * p->EI;
+            memcpy(qsave, q, (size_t)nq * sizeof(double));
+            int s2 = newton(&w, q, opts.max_newton, &eq->newton_iterations, &res);
+            eq->load_steps++;
+            if (s2 == GAL_OK) { lam = next; dl *= 2; }
+            else {
+                memcpy(q, qsave, (size_t)nq * sizeof(double));
+                dl *= 0.25;
+                if (dl < 1e-6) st = s2;
+            }
+            if (eq->load_steps > 200) st = gal_error(GAL_EFAIL, "statics: load stepping on the bending stiffness did not reach the full value (%.3g of it)", lam);
+        }
+        rod->p.EI = p->EI;
+    }
+    if (st) goto done;
+
+    /* outer iteration on L0 for a given H or sag: secant on f(L0) = measure - target */
+    if (spec != GAL_BY_LENGTH) {
+        double L0a = rod->p.unstretched_length, fa;
+        gal_rod_eval(rod, q, NULL, w.g, NULL);
+        fa = spec == GAL_BY_TENSION ? -w.g[0] - value : gal_rod_sag(rod, q) - value;
+        /* slope from the catenary: d(measure)/dL0 */
+        gal_catenary c2 = *cat;
+        double dL = 1e-6 * cat->L0;
+        gal_catenary_solve(&c2, GAL_BY_LENGTH, cat->L0 + dL);
+        double slope = spec == GAL_BY_TENSION ? (c2.H - cat->H) / dL : (gal_catenary_sag(&c2) - gal_catenary_sag(cat)) / dL;
+        double tol = spec == GAL_BY_TENSION ? 1e-10 * value : 1e-8 * value; /* sag: limited by the inner tolerance */
+        while (fabs(fa) > tol) {
+            if (eq->length_iterations++ >= opts.max_length_iter) {
+                st = gal_error(GAL_EFAIL, "statics: the unstretched length iteration did not converge (%s off by %.3g)",
+                               spec == GAL_BY_TENSION ? "horizontal tension" : "sag", fa);
+                goto done;
+            }
+            double L0b = L0a - fa / slope;
+            gal_rod_set_unstretched_length(rod, L0b);
+            if ((st = newton(&w, q, opts.max_newton, &eq->newton_iterations, &res))) goto done;
+            gal_rod_eval(rod, q, NULL, w.g, NULL);
+            double fb = spec == GAL_BY_TENSION ? -w.g[0] - value : gal_rod_sag(rod, q) - value;
+            if (fb != fa) slope = (fb - fa) / (L0b - L0a);
+            L0a = L0b, fa = fb;
+        }
+    }
+
+    /* stability: the tangent at the equilibrium must be positive definite (a free twist end
+     * leaves one neutral rotation, allowed for by a tiny shift) */
+    gal_rod_eval(rod, q, NULL, w.g, rod->K);
+    gal_rod_mass_diag(rod, w.mdiag);
+    {
+        double kmax = 0;
+        for (int j = 0; j < n; j++) kmax = fmax(kmax, rod->K->val[rod->K->diag[j]] / w.mdiag[j]);
+        double shift = (p->torsion && !p->twist_clamped) ? 1e-12 * kmax : 0;
+        if (gal_chol_factor(w.chol, rod->K, shift, w.mdiag) != GAL_OK) {
+            st = gal_error(GAL_EFAIL, "statics: the equilibrium found is not stable: %s", gal_error_message());
+            goto done;
+        }
+    }
+
+    eq->residual = res;
+    eq->unstretched_length = rod->p.unstretched_length;
+    eq->horizontal_tension = -w.g[0];
+    eq->sag = gal_rod_sag(rod, q);
+    eq->tension_left = sqrt(w.g[0] * w.g[0] + w.g[1] * w.g[1] + w.g[2] * w.g[2]);
+    {
+        int r = 3 * nel;
+        eq->tension_right = sqrt(w.g[r] * w.g[r] + w.g[r + 1] * w.g[r + 1] + w.g[r + 2] * w.g[r + 2]);
+    }
+    {
+        double *T = malloc((size_t)nel * sizeof(double));
+        if (T) {
+            gal_rod_tensions(rod, q, T);
+            for (int j = 0; j < nel; j++) eq->tension_max = fmax(eq->tension_max, T[j]);
+            free(T);
+        }
+    }
+done:
+    eq->factorizations = w.chol ? w.chol->factorizations : 0;
+    gal_chol_free(w.chol);
+    free(w.g); free(w.gt); free(w.qt); free(w.r); free(w.d); free(w.mdiag); free(qsave);
+    eq->wall_time_s = gal_wall_time() - t0;
+    if (st != GAL_OK) {
+        gal_rod_free(eq->rod);
+        free(eq->q);
+        eq->rod = NULL, eq->q = NULL;
+    }
+    return st;
+}
