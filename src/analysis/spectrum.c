@@ -9,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
 
 struct gal_welch {
     size_t nseg, nfreq;
@@ -59,7 +58,7 @@ gal_welch *gal_spectrum_welch_alloc(size_t nseg)
     }
     w->wss = 0;
     for (size_t j = 0; j < nseg; j++) {
-        w->win[j] = 0.5 - 0.5 * cos(2 * PI * (double)j / (double)nseg);
+        w->win[j] = 0.5 - 0.5 * cos(2 * GAL_PI * (double)j / (double)nseg);
         w->wss += w->win[j] * w->win[j];
     }
     return w;
@@ -119,7 +118,7 @@ int gal_spectrum_psd(gal_welch *w, const double *x, size_t n, double dt, double 
  * e^{-i w j} and e^{i th j} run by rotation and are reset exactly every 1024 samples. */
 static double dtft2(const double *x, size_t n, double dt, double mean, double f, double *wsum)
 {
-    double om = 2 * PI * f * dt, th = 2 * PI / (double)n;
+    double om = 2 * GAL_PI * f * dt, th = 2 * GAL_PI / (double)n;
     double cr = cos(om), sr = -sin(om), ct = cos(th), st = sin(th);
     double re = 0, im = 0, ws = 0;
     for (size_t j0 = 0; j0 < n; j0 += 1024) {
@@ -282,7 +281,7 @@ int gal_spectrum_orbit(const double *y, const double *z, size_t n, gal_orbit *o)
     double l1 = mid + rad, l2 = mid - rad;   /* eigenvalues of C, l1 >= l2 */
     o->major = sqrt(2 * l1);
     o->minor = sqrt(2 * (l2 > 0 ? l2 : 0));
-    double tilt = 0.5 * atan2(2 * cyz, cyy - czz) * 180 / PI;   /* in (-90, 90] */
+    double tilt = 0.5 * atan2(2 * cyz, cyy - czz) * 180 / GAL_PI;   /* in (-90, 90] */
     if (tilt <= -90) tilt += 180;
     o->tilt_deg = tilt;
     return GAL_OK;

@@ -6,7 +6,7 @@
 
 #include <cholmod.h>
 
-#include "gallop/rod/rod.h"
+#include "gallop/base/sparse.h"
 
 typedef struct gal_chol {
     cholmod_common c;

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "gallop/loads/aero.h"
 #include "gallop/base/core.h"
+#include "gallop/base/vec3.h"
 
 #include <errno.h>
 #include <math.h>
@@ -13,15 +14,12 @@
 
 #include <gsl/gsl_interp.h>
 
-#define DEG (M_PI / 180.0)
+#define DEG (GAL_PI / 180.0)
 #define CLOSE_TOL 1e-9      /* periodic closure: last row = first row + 360 within this */
 #define MIN_STEP_DEG 1e-6   /* two angles closer than this are treated as duplicates */
 #define MAX_ALPHA_DEG 720.0 /* |alpha_deg| allowed */
 #define MAX_ROWS 1000000
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static const char *const coef_name[3] = {"cd", "cl", "cm"};
 
@@ -136,7 +134,7 @@ static gal_aero_table *build(const char *name, const char *source, int rows, con
     t->alpha = malloc(n * sizeof(double));
     if (!t->path || !t->source || !t->alpha) goto nomem;
     for (int k = 0; k < nd; k++) t->alpha[k] = adeg[k] * DEG;
-    t->alpha[nd] = t->alpha[0] + 2.0 * M_PI;
+    t->alpha[nd] = t->alpha[0] + 2.0 * GAL_PI;
     *status = GAL_EINPUT;
     for (int i = 0; i < 3; i++) {
         t->c[i] = malloc(n * sizeof(double));
@@ -389,7 +387,7 @@ void gal_aero_eval(const gal_aero_table *t, double alpha, double c[3], double dc
         }
         return;
     }
-    const double a0 = t->alpha[0], a1 = t->alpha[t->n - 1], P = 2.0 * M_PI;
+    const double a0 = t->alpha[0], a1 = t->alpha[t->n - 1], P = 2.0 * GAL_PI;
     double x = alpha - a0;
     x -= P * floor(x / P);          /* x in [0, P) up to rounding */
     x += a0;
@@ -412,15 +410,6 @@ double gal_aero_den_hartog(const gal_aero_table *t, double alpha)
 /* loads                                                                                       */
 /* ------------------------------------------------------------------------------------------ */
 
-static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 static int finite3(const double a[3]) { return isfinite(a[0]) && isfinite(a[1]) && isfinite(a[2]); }
 
 /* The section frame: e3 = unit tangent, e1 = unit part of d1 normal to it, e2 = e3 x e1. */
@@ -428,17 +417,17 @@ static int frame(const double tan[3], const double d1[3], double e1[3], double e
 {
     if (!finite3(tan) || !finite3(d1))
         return gal_error(GAL_EINPUT, "aerodynamic load: non-finite tangent or reference direction");
-    double nt = sqrt(dot(tan, tan));
+    double nt = sqrt(gal_dot3(tan, tan));
     if (!(nt > 0)) return gal_error(GAL_EINPUT, "aerodynamic load: zero tangent");
     for (int i = 0; i < 3; i++) e3[i] = tan[i] / nt;
-    double s = dot(d1, e3);
+    double s = gal_dot3(d1, e3);
     for (int i = 0; i < 3; i++) e1[i] = d1[i] - s * e3[i]; /* e1 = (I - e3 e3^T) d1 */
-    double n1 = sqrt(dot(e1, e1)), nd = sqrt(dot(d1, d1));
+    double n1 = sqrt(gal_dot3(e1, e1)), nd = sqrt(gal_dot3(d1, d1));
     if (!(n1 > 1e-12 * nd) || !(nd > 0))
         return gal_error(GAL_EINPUT, "aerodynamic load: reference direction d1 is zero or parallel "
                          "to the tangent");
     for (int i = 0; i < 3; i++) e1[i] /= n1;
-    cross(e3, e1, e2);
+    gal_cross3(e3, e1, e2);
     return GAL_OK;
 }
 
@@ -446,7 +435,7 @@ double gal_aero_alpha(const double tan[3], const double d1[3], const double wrel
 {
     double e1[3], e2[3], e3[3];
     if (frame(tan, d1, e1, e2, e3) != GAL_OK || !finite3(wrel)) return 0.0;
-    double x = dot(wrel, e1), y = dot(wrel, e2);
+    double x = gal_dot3(wrel, e1), y = gal_dot3(wrel, e2);
     if (x == 0.0 && y == 0.0) return 0.0;
     return atan2(y, x);
 }
@@ -467,7 +456,7 @@ int gal_aero_load_deriv(const gal_aero_table *t, const double tan[3], const doub
                          "finite or negative (rho = %g, d = %g)", rho, diam);
 
     /* ---- normal part of the relative wind, its speed and direction ---- */
-    double x = dot(wrel, e1), y = dot(wrel, e2);   /* wn = x e1 + y e2 */
+    double x = gal_dot3(wrel, e1), y = gal_dot3(wrel, e2);   /* wn = x e1 + y e2 */
     double V = hypot(x, y);
     if (!(V > 1e-100)) return GAL_OK;              /* no wind, no load; load ~ V^2: zero slope */
     double wh[3], lh[3];                            /* w^ and l^ = e3 x w^ */

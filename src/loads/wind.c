@@ -13,9 +13,6 @@
 #include <fftw3.h>
 #include <gsl/gsl_rng.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 #define MIN_SAMPLES 16
 #define MAX_VALUES 250000000L /* points * samples: 2 GB of doubles */
@@ -197,7 +194,7 @@ int gal_wind_generate(gal_wind *w)
         /* B_0 = xi_0; B_j = r B_(j-1) + sqrt(1 - r^2) xi_j  (row j of the analytic Cholesky
          * factor of Gamma_jk = r^|j-k| applied to unit random phasors) */
         for (long m = 1; m <= mmax; m++) {
-            double phi = 2.0 * M_PI * gsl_rng_uniform(w->rng);
+            double phi = 2.0 * GAL_PI * gsl_rng_uniform(w->rng);
             double xr = cos(phi), xi = sin(phi);
             if (j == 0) {
                 w->bre[m] = xr;

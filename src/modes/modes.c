@@ -2,6 +2,7 @@
  * by ARPACK shift-invert (mode 3) with CHOLMOD; classification by kinetic-energy shares. */
 #include "gallop/modes/modes.h"
 #include "gallop/base/core.h"
+#include "gallop/base/vec3.h"
 
 #include <arpack/arpack.h>
 #include <math.h>
@@ -20,7 +21,6 @@ void gal_modes_clear(gal_modes *m)
     memset(m, 0, sizeof *m);
 }
 
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* Shares of kinetic energy and symmetry of one mode. The local axes at node i: the tangent t,
  * the normal b of the span's plane (chord x mid-span offset; y when the span is straight) and the
@@ -37,8 +37,8 @@ static void classify(const gal_rod *rod, const double *q, const double *phi_free
                      q[3 * mid + 2] - 0.5 * (q[2] + q[3 * nel + 2])};
     double b[3] = {chord[1] * off[2] - chord[2] * off[1], chord[2] * off[0] - chord[0] * off[2],
                    chord[0] * off[1] - chord[1] * off[0]};
-    double nb = sqrt(dot3(b, b));
-    if (nb < 1e-9 * dot3(chord, chord)) b[0] = 0, b[1] = 1, b[2] = 0;
+    double nb = sqrt(gal_dot3(b, b));
+    if (nb < 1e-9 * gal_dot3(chord, chord)) b[0] = 0, b[1] = 1, b[2] = 0;
     else for (int k = 0; k < 3; k++) b[k] /= nb;
 
     double ke[GAL_FAMILY_COUNT] = {0};
@@ -48,11 +48,11 @@ static void classify(const gal_rod *rod, const double *q, const double *phi_free
         int a = i > 0 ? i - 1 : 0, c = i < nel ? i : nel - 1;
         double t[3];
         for (int k = 0; k < 3; k++) t[k] = q[3 * (c + 1) + k] - q[3 * a + k];
-        double nt = sqrt(dot3(t, t));
+        double nt = sqrt(gal_dot3(t, t));
         for (int k = 0; k < 3; k++) t[k] /= nt;
         double n[3] = {t[1] * b[2] - t[2] * b[1], t[2] * b[0] - t[0] * b[2], t[0] * b[1] - t[1] * b[0]};
         const double *u = full + 3 * i;
-        double uv = dot3(u, n), uh = dot3(u, b), ua = dot3(u, t), m = rod->node_mass[i];
+        double uv = gal_dot3(u, n), uh = gal_dot3(u, b), ua = gal_dot3(u, t), m = rod->node_mass[i];
         ke[GAL_FAMILY_VERTICAL] += m * uv * uv;
         ke[GAL_FAMILY_HORIZONTAL] += m * uh * uh;
         ke[GAL_FAMILY_AXIAL] += m * ua * ua;

@@ -1,6 +1,7 @@
 /* rdyn.c: the reduced equations of motion on the modes, integrated by GSL odeiv2 (rk8pd). */
 #include "gallop/reduced/rdyn.h"
 #include "gallop/base/core.h"
+#include "gallop/base/vec3.h"
 
 #include <gsl/gsl_errno.h>
 #include <math.h>
@@ -17,15 +18,6 @@ gal_rdyn *gal_rdyn_free(gal_rdyn *d)
     }
     return NULL;
 }
-
-static void cross(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* y = (eta, eta'): eta'' = F(t, eta, eta') - damp eta' - f(eta) */
 static int rhs(double t, const double y[], double dydt[], void *params)
@@ -64,12 +56,12 @@ static int rhs(double t, const double y[], double dydt[], void *params)
             }
             /* tangent and reference director: the equilibrium director carried by the minimal
              * rotation to the current tangent, turned by the twist */
-            double nrm = sqrt(dot(rs, rs)), tg[3], a[3], b[3], d1[3];
+            double nrm = sqrt(gal_dot3(rs, rs)), tg[3], a[3], b[3], d1[3];
             for (int k = 0; k < 3; k++) tg[k] = rs[k] / nrm;
             const double *te = d->teq + 3 * q, *ae = d->aeq + 3 * q;
-            double fct = dot(tg, ae) / (1.0 + dot(te, tg));
+            double fct = gal_dot3(tg, ae) / (1.0 + gal_dot3(te, tg));
             for (int k = 0; k < 3; k++) a[k] = ae[k] - fct * (te[k] + tg[k]);
-            cross(tg, a, b);
+            gal_cross3(tg, a, b);
             for (int k = 0; k < 3; k++) d1[k] = cos(th) * a[k] + sin(th) * b[k];
             double f[3] = {0, 0, 0}, m = 0;
             int st = d->load.eval(d->load.ctx, t, pos[0], pos, vel, tg, d1, f, &m);
@@ -168,7 +160,7 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
             for (int k = 0; k < 3; k++) d->aeq[3 * q + k] = a[k];
             /* keep teq as the unit tangent for the frame transport and rs as dr/ds: since
              * |dr/ds| differs from 1 only by the strain, normalize */
-            double nt = sqrt(dot(d->teq + 3 * q, d->teq + 3 * q));
+            double nt = sqrt(gal_dot3(d->teq + 3 * q, d->teq + 3 * q));
             d->nt[q] = nt;
             for (int k = 0; k < 3; k++) d->teq[3 * q + k] /= nt;
             /* twist at s: piecewise linear between edge centres (e0, e1, w1) */

@@ -3,6 +3,7 @@
  * (bending and torsion) and extension are differentiated in closed form. */
 #include "gallop/base/core.h"
 #include "gallop/rod/rod.h"
+#include "gallop/base/vec3.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -12,77 +13,15 @@
 #define NL 11   /* node stencil: x_{i-1}, x_i, x_{i+1} (9), theta_{i-1}, theta_i */
 #define EL 6    /* edge: x_j, x_{j+1} */
 
-/* ---- small 3-vector helpers ---- */
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static double norm3(const double *a) { return sqrt(dot3(a, a)); }
-static void cross3(const double *a, const double *b, double *r)
-{
-    double t0 = a[1] * b[2] - a[2] * b[1], t1 = a[2] * b[0] - a[0] * b[2], t2 = a[0] * b[1] - a[1] * b[0];
-    r[0] = t0, r[1] = t1, r[2] = t2;
-}
-
 static void transport(const double *tb, const double *a, const double *t, double *r);
 static void build_mass(gal_rod *rod);
 
 /* ---- sparse pattern ---- */
 
-gal_csc *gal_csc_free(gal_csc *A)
-{
-    if (A) {
-        free(A->colptr);
-        free(A->rowind);
-        free(A->val);
-        free(A->diag);
-        free(A);
-    }
-    return NULL;
-}
-
-gal_csc *gal_csc_clone(const gal_csc *A)
-{
-    gal_csc *B = calloc(1, sizeof *B);
-    if (!B) return NULL;
-    B->n = A->n;
-    B->nnz = A->nnz;
-    B->colptr = malloc((size_t)(A->n + 1) * sizeof(int));
-    B->rowind = malloc((size_t)A->nnz * sizeof(int));
-    B->val = calloc((size_t)A->nnz, sizeof(double));
-    B->diag = malloc((size_t)A->n * sizeof(int));
-    if (!B->colptr || !B->rowind || !B->val || !B->diag) return gal_csc_free(B);
-    memcpy(B->colptr, A->colptr, (size_t)(A->n + 1) * sizeof(int));
-    memcpy(B->rowind, A->rowind, (size_t)A->nnz * sizeof(int));
-    memcpy(B->diag, A->diag, (size_t)A->n * sizeof(int));
-    return B;
-}
-
-void gal_csc_symv(const gal_csc *A, const double *x, double *y)
-{
-    memset(y, 0, (size_t)A->n * sizeof(double));
-    for (int j = 0; j < A->n; j++)
-        for (int p = A->colptr[j]; p < A->colptr[j + 1]; p++) {
-            int i = A->rowind[p];
-            y[i] += A->val[p] * x[j];            /* upper part A(i,j) */
-            if (i != j) y[j] += A->val[p] * x[i]; /* its mirror A(j,i) */
-        }
-}
-
 static int cmp_pair(const void *a, const void *b)
 {
     const long *x = a, *y = b;
     return (*x > *y) - (*x < *y);
-}
-
-/* Index of entry (i, j), i <= j, in the pattern, or -1. */
-static int csc_find(const gal_csc *A, int i, int j)
-{
-    int lo = A->colptr[j], hi = A->colptr[j + 1] - 1;
-    while (lo <= hi) {
-        int mid = (lo + hi) / 2;
-        if (A->rowind[mid] == i) return mid;
-        if (A->rowind[mid] < i) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
 }
 
 /* Configuration indices of the node stencil at interior node i and of edge j. */
@@ -152,7 +91,7 @@ static int build_pattern(gal_rod *rod)
         A->colptr[col + 1]++;
     }
     for (int j = 0; j < n; j++) A->colptr[j + 1] += A->colptr[j];
-    for (int j = 0; j < n; j++) A->diag[j] = csc_find(A, j, j);
+    for (int j = 0; j < n; j++) A->diag[j] = gal_csc_find(A, j, j);
     free(pairs);
     rod->K = A;
 
@@ -166,7 +105,7 @@ static int build_pattern(gal_rod *rod)
         for (int a = 0; a < NL; a++)
             for (int b = 0; b < NL; b++) {
                 int da = qi[a] < 0 ? -1 : rod->dof[qi[a]], db = qi[b] < 0 ? -1 : rod->dof[qi[b]];
-                s[a * NL + b] = (da >= 0 && db >= 0 && da <= db) ? csc_find(A, da, db) : -1;
+                s[a * NL + b] = (da >= 0 && db >= 0 && da <= db) ? gal_csc_find(A, da, db) : -1;
             }
     }
     for (int j = 0; j < nel; j++) {
@@ -175,7 +114,7 @@ static int build_pattern(gal_rod *rod)
         for (int a = 0; a < EL; a++)
             for (int b = 0; b < EL; b++) {
                 int da = rod->dof[qi[a]], db = rod->dof[qi[b]];
-                s[a * EL + b] = (da >= 0 && db >= 0 && da <= db) ? csc_find(A, da, db) : -1;
+                s[a * EL + b] = (da >= 0 && db >= 0 && da <= db) ? gal_csc_find(A, da, db) : -1;
             }
     }
     return GAL_OK;
@@ -252,19 +191,19 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
          * horizontal normal y carried into the plane normal to the tangent */
         double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j;
         for (int k = 0; k < 3; k++) t[k] = q0[3 * (j + 1) + k] - q0[3 * j + k];
-        double le = norm3(t);
+        double le = gal_norm3(t);
         if (!(le > 0)) {
             gal_error(GAL_EINPUT, "rod: element %d of the reference geometry has zero length", j);
             return gal_rod_free(rod);
         }
         for (int k = 0; k < 3; k++) t[k] /= le;
-        double y[3] = {0, 1, 0}, ty = dot3(t, y);
+        double y[3] = {0, 1, 0}, ty = gal_dot3(t, y);
         for (int k = 0; k < 3; k++) a[k] = y[k] - ty * t[k];
-        double na = norm3(a);
+        double na = gal_norm3(a);
         if (na < 1e-6) { /* tangent along y: fall back to z */
-            double z[3] = {0, 0, 1}, tz = dot3(t, z);
+            double z[3] = {0, 0, 1}, tz = gal_dot3(t, z);
             for (int k = 0; k < 3; k++) a[k] = z[k] - tz * t[k];
-            na = norm3(a);
+            na = gal_norm3(a);
         }
         for (int k = 0; k < 3; k++) a[k] /= na;
     }
@@ -277,7 +216,7 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
         if (!rod->ecc_c) { gal_error(GAL_ENOMEM, "rod: out of memory"); return gal_rod_free(rod); }
         for (int j = 0; j < nel; j++) {
             double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j, b[3];
-            cross3(t, a, b);
+            gal_cross3(t, a, b);
             for (int k = 0; k < 3; k++) rod->ecc_c[3 * j + k] = cos(p->ecc_angle) * a[k] + sin(p->ecc_angle) * b[k];
         }
     }
@@ -302,14 +241,14 @@ static void build_mass(gal_rod *rod)
         int dt = rod->dof[3 * nn + j];
         if (dt < 0) continue;
         double g[3], *c = rod->ecc_c + 3 * j, *t = rod->tbar + 3 * j;
-        cross3(t, c, g);
+        gal_cross3(t, c, g);
         double f = 0.5 * rod->l0[j] * rod->p.ecc_mass * rod->p.ecc;
         for (int node = j; node <= j + 1; node++)
             for (int k = 0; k < 3; k++) {
                 int dx = rod->dof[3 * node + k];
                 if (dx < 0) continue;
                 int a = dx < dt ? dx : dt, b = dx < dt ? dt : dx;
-                int sl = csc_find(M, a, b);
+                int sl = gal_csc_find(M, a, b);
                 if (sl >= 0) M->val[sl] += f * g[k];
             }
     }
@@ -343,11 +282,11 @@ void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t
 {
     double e[3], a[3];
     for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
-    double le = norm3(e);
+    double le = gal_norm3(e);
     for (int k = 0; k < 3; k++) t[k] = e[k] / le;
     transport(rod->tbar + 3 * j, rod->abar + 3 * j, t, a);
     double th = rod->p.torsion ? q[3 * rod->nn + j] : 0.0, b[3];
-    cross3(t, a, b);
+    gal_cross3(t, a, b);
     for (int k = 0; k < 3; k++) d1[k] = cos(th) * a[k] + sin(th) * b[k];
 }
 
@@ -374,7 +313,7 @@ void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension)
     for (int j = 0; j < rod->p.elements; j++) {
         double e[3];
         for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
-        tension[j] = rod->p.EA * (norm3(e) / rod->l0[j] - 1.0);
+        tension[j] = rod->p.EA * (gal_norm3(e) / rod->l0[j] - 1.0);
     }
 }
 
@@ -405,8 +344,8 @@ static void mul33(m33 A, m33 B, m33 C)
  * derivatives dg/du = -s [v]_x - s^2 (u x v) v^T, dg/dv = s [u]_x - s^2 (u x v) u^T, s = 1/(1+u.v). */
 static void halfrot(const double *u, const double *v, double *g, m33 Du, m33 Dv)
 {
-    double s = 1.0 / (1.0 + dot3(u, v)), w[3];
-    cross3(u, v, w);
+    double s = 1.0 / (1.0 + gal_dot3(u, v)), w[3];
+    gal_cross3(u, v, w);
     for (int k = 0; k < 3; k++) g[k] = s * w[k];
     if (Du) {
         skew(v, Du);
@@ -423,7 +362,7 @@ static void halfrot(const double *u, const double *v, double *g, m33 Du, m33 Dv)
 /* Parallel transport of a (normal to tb) from unit tangent tb to unit tangent t. */
 static void transport(const double *tb, const double *a, const double *t, double *r)
 {
-    double f = dot3(t, a) / (1.0 + dot3(tb, t));
+    double f = gal_dot3(t, a) / (1.0 + gal_dot3(tb, t));
     for (int k = 0; k < 3; k++) r[k] = a[k] - f * (tb[k] + t[k]);
 }
 
@@ -437,9 +376,9 @@ static double stencil(const gal_rod *rod, int i, const double *q, double *g, dou
         e0[k] = q[3 * i + k] - q[3 * (i - 1) + k];
         e1[k] = q[3 * (i + 1) + k] - q[3 * i + k];
     }
-    double n0 = norm3(e0), n1 = norm3(e1);
+    double n0 = gal_norm3(e0), n1 = gal_norm3(e1);
     for (int k = 0; k < 3; k++) t0[k] = e0[k] / n0, t1[k] = e1[k] / n1;
-    double c = dot3(t0, t1);
+    double c = gal_dot3(t0, t1);
     m33 P0, P1;
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
@@ -480,8 +419,8 @@ static double stencil(const gal_rod *rod, int i, const double *q, double *g, dou
         transport(tb0, rod->abar + 3 * (i - 1), t0, A0); /* reference director of edge i-1 */
         transport(tb1, rod->abar + 3 * i, t1, A1);        /* and of edge i */
         transport(t0, A0, t1, u);                         /* edge i-1's carried across node i */
-        cross3(u, A1, w);
-        double mref = atan2(dot3(w, t1), dot3(u, A1));    /* signed angle u -> A1 about t1 */
+        gal_cross3(u, A1, w);
+        double mref = atan2(gal_dot3(w, t1), gal_dot3(u, A1));    /* signed angle u -> A1 about t1 */
         double th0 = q[3 * rod->nn + i - 1], th1 = q[3 * rod->nn + i];
         double m = th1 - th0 + mref, kt = p->GJ / lbar;
         /* d mref/de0 = [g(t0,t1) + g(tb0,t0)]/n0, d mref/de1 = [g(t0,t1) - g(tb1,t1)]/n1: the
@@ -542,7 +481,7 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
     for (int j = 0; j < nel; j++) {
         double e[3], l0 = rod->l0[j];
         for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
-        double le = norm3(e);
+        double le = gal_norm3(e);
         if (!(le > 1e-12 * l0)) return gal_error(GAL_EFAIL, "rod: element %d has collapsed (length %g m)", j, le);
         double eps = le / l0 - 1.0, t[3] = {e[0] / le, e[1] / le, e[2] / le};
         U += 0.5 * p->EA * eps * eps * l0;
@@ -579,7 +518,7 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
                     e0[k] = q[3 * i + k] - q[3 * (i - 1) + k];
                     e1[k] = q[3 * (i + 1) + k] - q[3 * i + k];
                 }
-                c = dot3(e0, e1) / (norm3(e0) * norm3(e1));
+                c = gal_dot3(e0, e1) / (gal_norm3(e0) * gal_norm3(e1));
             }
             if (!(c > -0.999))
                 return gal_error(GAL_EFAIL, "rod: the rod folds back on itself at node %d", i);
@@ -628,7 +567,7 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
         for (int j = 0; j < nel; j++) {
             int k = 3 * nn + j;
             double *c = rod->ecc_c + 3 * j, *t = rod->tbar + 3 * j, tc[3];
-            cross3(t, c, tc);
+            gal_cross3(t, c, tc);
             double th = q[k], w = p->ecc_mass * p->gravity * p->ecc * rod->l0[j];
             double cz = cos(th) * c[2] + sin(th) * tc[2], dcz = -sin(th) * c[2] + cos(th) * tc[2];
             U += w * cz;

@@ -20,7 +20,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#define DEG (3.14159265358979323846 / 180.0) /* rad per degree */
+#define DEG (GAL_PI / 180.0) /* rad per degree */
 #define VALMAX (GAL_PATH_MAX + 64)            /* longest value kept for messages */
 #define FILEMAX (4L << 20)                    /* largest scene or table file read, bytes */
 

@@ -15,6 +15,8 @@
 
 #include <stddef.h>
 
+#include "gallop/base/sparse.h"
+
 typedef struct gal_rod_params {
     double length;            /* m, horizontal span L */
     double height_difference; /* m, right support minus left */
@@ -36,16 +38,6 @@ typedef struct gal_rod_params {
     double ecc;
     double ecc_angle;
 } gal_rod_params;
-
-/* Compressed sparse column, upper triangle (row <= col), for the free degrees of freedom. */
-typedef struct gal_csc {
-    int n;        /* rows = columns */
-    int nnz;
-    int *colptr;  /* n + 1 */
-    int *rowind;  /* nnz */
-    double *val;  /* nnz */
-    int *diag;    /* n: index of the diagonal entry of each column */
-} gal_csc;
 
 /* The immutable model of a discretized span. The full configuration q holds 3 (elements + 1)
  * node positions (m) followed, when torsion is on, by `elements` twist angles (rad). */
@@ -94,12 +86,6 @@ void gal_rod_mass_mult(const gal_rod *rod, const double *x, double *y);
 
 /* Axial tension of each element (N) and horizontal tension at the left support (N). */
 void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension);
-
-/* A copy of the pattern of K (values zeroed) for callers that keep their own matrix. */
-gal_csc *gal_csc_clone(const gal_csc *A);
-gal_csc *gal_csc_free(gal_csc *A);
-/* y = A x for the symmetric matrix stored as its upper triangle. */
-void gal_csc_symv(const gal_csc *A, const double *x, double *y);
 
 /* Unit tangent t and first material director d1 of edge j (the section's reference direction:
  * the reference director carried to t by the minimal rotation, turned by the edge's twist). */
