@@ -2,8 +2,9 @@
 # test_hard_scenes.sh: the hard cases of tests/hard/*.ini through the real binary (issue 8).
 # Each scene says in its opening comment what it tests and what must hold. For each: `gallop
 # modes` (and `gallop simulate` where the case is dynamic) exits 0 with finite numbers in
-# summary.json (no null, no nan, no inf) and the case's own property holds; or it exits 1 with a
-# reason on stderr (a case with no answer). Never a crash (exit >= 128) or a hang (timeout).
+# summary.json (no null, no nan, no inf) and the case's own property holds. An exit 1 counts as a
+# failure unless the case says it may refuse (run_may_refuse: then the refusal must give its reason
+# and write nothing). Never a crash (exit >= 128) or a hang (timeout).
 # Run from the repository root (scenes name their conductor from data/conductors.csv).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
@@ -32,8 +33,9 @@ finite() { ! grep -Eqi '(: |\[|, )(null|-?nan|-?inf)' "$1"; }
 rel_close() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN{d=a-b; if(d<0)d=-d; if(b<0)b=-b; exit !(d<=t*b)}'; }
 
 # run NAME CMD SCENE [ARGS...]: runs gallop CMD with a time limit into $tmp/NAME; sets rc.
-# Classifies the exit: 0 (then summary.json must be finite), 1 with a reason (clean failure),
-# anything else is a failure of the test. Returns 0 when the caller should check the case.
+# Classifies the exit: 0 (then summary.json must be finite), 1 only where the caller set
+# may_refuse=PATTERN (the reason stderr must give), anything else is a failure of the test.
+# Returns 0 when the caller should check the case.
 run() {
     local name=$1 cmd=$2 scene=$3; shift 3
     local t0=$SECONDS
@@ -43,10 +45,13 @@ run() {
     if [ $rc -eq 124 ]; then bad "$name: hangs (killed after 120 s)"; return 1; fi
     if [ $rc -ge 128 ]; then bad "$name: crashed (exit $rc): $(tail -n 3 "$tmp/$name.err")"; return 1; fi
     if [ $rc -eq 1 ]; then
-        if [ -s "$tmp/$name.err" ] && [ ! -e "$tmp/$name/summary.json" ]; then
-            ok "$name: fails cleanly (exit 1): $(tail -n 1 "$tmp/$name.err" | cut -c1-150)"
+        if [ "${may_refuse:-}" = "" ]; then
+            bad "$name: exit 1 where an answer is due: $(tail -n 1 "$tmp/$name.err" | cut -c1-150)"
+        elif [ -s "$tmp/$name.err" ] && [ ! -e "$tmp/$name/summary.json" ] \
+            && grep -qi -- "$may_refuse" "$tmp/$name.err"; then
+            ok "$name: refuses with its reason (exit 1): $(tail -n 1 "$tmp/$name.err" | cut -c1-150)"
         else
-            bad "$name: exit 1 without a reason or with partial output"
+            bad "$name: exit 1 without the reason '$may_refuse', or with partial output"
         fi
         return 1
     fi
@@ -113,9 +118,14 @@ if run irvine_crossover modes "$H/irvine_crossover.ini"; then
     fi
 fi
 
-# the dynamic scenes have modes too
+# the dynamic scenes have modes too: every frequency positive and increasing, and at least the
+# modes the scene selects
 for s in strong_wind wind_reversal twist_accumulation long_run huge_time_step; do
-    run "$s.modes" modes "$H/$s.ini" || true
+    if run "$s.modes" modes "$H/$s.ini"; then
+        awk -F, 'NR>1 {if (!($4 > 0) || $4 < prev) exit 1; prev=$4; n++} END{exit !(n >= 3)}' "$tmp/$s.modes/modes.csv" \
+            && ok "$s: $(($(wc -l < "$tmp/$s.modes/modes.csv") - 1)) modes, positive and ordered, first $(awk -F, 'NR==2{print $4}' "$tmp/$s.modes/modes.csv") Hz" \
+            || bad "$s: modes.csv has a zero, negative or unordered frequency"
+    fi
 done
 
 # ---- dynamics ----
@@ -150,8 +160,14 @@ if zero_heap run twist_accumulation.full simulate "$H/twist_accumulation.ini" --
     awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation full: max |twist| $tw deg" \
         || bad "twist_accumulation full: max |twist| only $tw deg"
 fi
-if run twist_accumulation.reduced simulate "$H/twist_accumulation.ini" --model reduced; then
-    ok "twist_accumulation reduced: twist p-p $(json twist_amplitude_deg "$tmp/twist_accumulation.reduced/summary.json") deg"
+# Today the reduced model's fitted restoring force cannot follow several turns and its integrator
+# gives up ("reduced model: the step size fell to ..."): a refusal with the stage named, nothing
+# written. The reduced-model issue (#13: coupling recomputed from the rod) must make it follow the
+# twist; then may_refuse goes and the twist check below must hold.
+if may_refuse="reduced model" run twist_accumulation.reduced simulate "$H/twist_accumulation.ini" --model reduced; then
+    tw=$(json twist_amplitude_deg "$tmp/twist_accumulation.reduced/summary.json")
+    awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation reduced: twist p-p $tw deg" \
+        || bad "twist_accumulation reduced: exit 0 with twist p-p only $tw deg where the full model turns past 360"
 fi
 
 # one hour of the reduced model: no drift. The steady vertical amplitude (RMS at mid-span) of

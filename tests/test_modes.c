@@ -1,7 +1,10 @@
 /* test_modes.c: natural frequencies against cable theory (Irvine & Caughey 1974; Irvine, Cable
  * Structures, 1981): out-of-plane, in-plane antisymmetric and symmetric (lambda^2 below, at and
- * above 4 pi^2), torsional string modes; within 0.5% at 100 elements with small EI; the error
- * falls with mesh refinement at second order. */
+ * above 4 pi^2), torsional string modes at 100 elements with small EI; the error falls with mesh
+ * refinement at second order. The tolerances are a margin over what the discretization allows:
+ * a string of N lumped masses has w_n = (2N c / L) sin(n pi / 2N), a relative error of
+ * -(n pi / N)^2 / 24, which is what the rod shows for the out-of-plane and torsional modes; the
+ * in-plane modes add the shallow-cable theory's own O((sag/L)^2) error, 8 (d/L)^2 = 7e-4 here. */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/modes/modes.h"
@@ -11,6 +14,16 @@
 #define H 20000.0
 #define M 1.5
 #define G 9.80665
+
+/* Relative error a lumped n-th string mode of wave number n may carry at nel elements (x1.5). */
+static double string_tol(int n, int nel)
+{
+    double k = n * GAL_PI / nel;
+    return 1.5 * k * k / 24 + 2e-5;
+}
+
+/* The shallow-cable theory's own error on the in-plane modes: 8 (sag/L)^2 (sag of this span). */
+#define INPLANE_THEORY (8 * pow(M * G * L / (8 * H), 2)) /* sag / L = m g L / 8 H */
 
 static gal_rod_params span(int nel, double EA)
 {
@@ -70,7 +83,7 @@ static void test_out_of_plane_and_antisymmetric(void)
     double f1 = sqrt(H / M) / (2 * L);
     for (int n = 1; n <= 4; n++) {
         double fh = freq(&s.md, GAL_FAMILY_HORIZONTAL, GAL_SYM_NONE, n);
-        CHECK_REL(fh, n * f1, 5e-3);
+        CHECK_REL(fh, n * f1, string_tol(n, 100));
         gal_symmetry sy = n % 2 ? GAL_SYM_SYMMETRIC : GAL_SYM_ANTISYMMETRIC;
         int k = 0;
         for (int i = 0; i < s.md.n; i++)
@@ -79,7 +92,7 @@ static void test_out_of_plane_and_antisymmetric(void)
     }
     for (int n = 1; n <= 2; n++) {
         double fa = freq(&s.md, GAL_FAMILY_VERTICAL, GAL_SYM_ANTISYMMETRIC, n);
-        CHECK_REL(fa, 2 * n * f1, 5e-3);
+        CHECK_REL(fa, 2 * n * f1, string_tol(2 * n, 100) + INPLANE_THEORY);
     }
     printf("    (f1 %.5f Hz: horizontal %.5f %.5f, antisymmetric vertical %.5f)\n", f1,
            freq(&s.md, GAL_FAMILY_HORIZONTAL, GAL_SYM_NONE, 1), freq(&s.md, GAL_FAMILY_HORIZONTAL, GAL_SYM_NONE, 2),
@@ -103,11 +116,20 @@ static void check_symmetric(double lam2_target)
     double got = freq(&s.md, GAL_FAMILY_VERTICAL, GAL_SYM_SYMMETRIC, 1);
     if (fabs(lam2 - 4 * GAL_PI * GAL_PI) < 1) {
         double v1 = freq(&s.md, GAL_FAMILY_VERTICAL, GAL_SYM_NONE, 1), v2 = freq(&s.md, GAL_FAMILY_VERTICAL, GAL_SYM_NONE, 2);
-        CHECK_REL(v1, fs, 5e-3);
-        CHECK_REL(v2, fa, 5e-3);
-        got = v1;
+        CHECK_REL(v1, fs, 1e-3);
+        CHECK_REL(v2, fa, string_tol(2, 100) + INPLANE_THEORY);
+        /* and the labels: of the nearly coincident pair, the one called symmetric is Irvine's
+         * symmetric mode and the one called antisymmetric the string's */
+        CHECK_REL(got, fs, 1e-3);
+        CHECK_REL(freq(&s.md, GAL_FAMILY_VERTICAL, GAL_SYM_ANTISYMMETRIC, 1), fa, string_tol(2, 100) + INPLANE_THEORY);
+        int pair[2], np = 0;
+        for (int i = 0; i < s.md.n && np < 2; i++)
+            if (s.md.mode[i].family == GAL_FAMILY_VERTICAL) pair[np++] = i;
+        CHECK(np == 2 && s.md.mode[pair[0]].symmetry != s.md.mode[pair[1]].symmetry &&
+              s.md.mode[pair[0]].symmetry != GAL_SYM_NONE && s.md.mode[pair[1]].symmetry != GAL_SYM_NONE,
+              "the crossover pair's labels");
     } else {
-        CHECK_REL(got, fs, 5e-3);
+        CHECK_REL(got, fs, 1e-3); /* achieved 3.5e-4 .. 5.3e-4 over the three lambda^2 */
     }
     printf("    (lambda^2 %.2f: symmetric %.5f Hz vs Irvine %.5f, error %.3f%%)\n", lam2, got, fs,
            100 * (got - fs) / fs);
@@ -126,7 +148,7 @@ static void test_torsional_string(void)
     double L0 = s.eq.unstretched_length;
     for (int n = 1; n <= 3; n++) {
         double ft = n * sqrt(100 / 1e-4) / (2 * L0);
-        CHECK_REL(freq(&s.md, GAL_FAMILY_TORSIONAL, GAL_SYM_NONE, n), ft, 5e-3);
+        CHECK_REL(freq(&s.md, GAL_FAMILY_TORSIONAL, GAL_SYM_NONE, n), ft, string_tol(n, 100));
     }
     printf("    (torsional %.5f Hz vs %.5f)\n", freq(&s.md, GAL_FAMILY_TORSIONAL, GAL_SYM_NONE, 1),
            sqrt(100 / 1e-4) / (2 * L0));

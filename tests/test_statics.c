@@ -48,9 +48,14 @@ static void check_equilibrium(double h, gal_statics_spec spec, double EI)
     printf("    (h %g, spec %d: H %.6g N, sag %.6g m vs catenary %.6g N, %.6g m; %d Newton, %d L0 "
            "iterations, %.2f ms)\n", h, spec, eq.horizontal_tension, eq.sag, c.H, gal_catenary_sag(&c),
            eq.newton_iterations, eq.length_iterations, 1e3 * eq.wall_time_s);
-    CHECK_REL(eq.horizontal_tension, c.H, 1e-3);
-    CHECK_REL(eq.sag, gal_catenary_sag(&c), 1e-3);
-    CHECK_REL(eq.unstretched_length, c.L0, 1e-6);
+    /* Against the continuous elastic catenary (Irvine 1981), an independent reference: at 100
+     * elements the discrete rod's unstretched length for a given H is 1.2e-7 (relative) off it (its
+     * O(h^2) discretization error, measured), so by tension or sag H and sag agree to 1e-7; by
+     * length that error on L0 - chord (0.3 m) moves H and sag by 3.6e-5. Tolerances ~3x that. */
+    double tol = spec == GAL_BY_LENGTH ? 1e-4 : 5e-7;
+    CHECK_REL(eq.horizontal_tension, c.H, tol);
+    CHECK_REL(eq.sag, gal_catenary_sag(&c), tol);
+    CHECK_REL(eq.unstretched_length, c.L0, 4e-7);
     if (spec == GAL_BY_TENSION) CHECK_REL(eq.horizontal_tension, 28000, 1e-9);
     if (spec == GAL_BY_SAG) CHECK_REL(eq.sag, value, 1e-8);
     /* the equilibrium is planar and untwisted */
@@ -96,7 +101,7 @@ static void test_eccentric_ice_twist(void)
     double th = 0.5 * (eq.q[3 * eq.rod->nn + nel / 2 - 1] + eq.q[3 * eq.rod->nn + nel / 2]);
     double L0 = eq.unstretched_length, want = p.ecc_mass * p.gravity * p.ecc * L0 * L0 / (8 * p.GJ);
     printf("    (mid-span twist %.6g rad, string under uniform moment %.6g rad)\n", th, want);
-    CHECK_REL(fabs(th), want, 1e-2);
+    CHECK_REL(fabs(th), want, 2e-3); /* achieved 5.4e-4 at 100 elements */
     gal_equilibrium_clear(&eq);
 }
 

@@ -152,7 +152,9 @@ static void test_psd_octave_bands(void)
             double e = est / tgt - 1;
             printf(" %+.1f%%", 100 * e);
             if (fabs(e) > fabs(worst)) worst = e;
-            CHECK(fabs(e) < 0.10, "%s: octave from %g Hz: estimate/target - 1 = %g", names[k], f0, e);
+            /* 32 points x 15 averages x >= 4 bins per octave: a sampling error of a few per cent
+             * (achieved: worst 2.5%, Davenport's lowest octave) */
+            CHECK(fabs(e) < 0.05, "%s: octave from %g Hz: estimate/target - 1 = %g", names[k], f0, e);
         }
         printf("  (worst %+.1f%%)\n", 100 * worst);
         free(pxx);
@@ -196,7 +198,7 @@ static void test_coherence(void)
             }
             double coh = sxy / sqrt(sxx * syy), e = coh - tgt / nb;   /* co-coherence */
             if (fabs(e) > fabs(worst)) worst = e;
-            CHECK(fabs(e) < 0.1, "dx = %g m, octave from %g Hz: coherence %g, target %g", dx, f0,
+            CHECK(fabs(e) < 0.05, "dx = %g m, octave from %g Hz: coherence %g, target %g", dx, f0, /* achieved 0.019 */
                   coh, tgt / nb);
         }
         printf("    coherence at dx = %g m: worst band error %+.3f (absolute)\n", dx, worst);
@@ -231,8 +233,8 @@ static void test_mean_and_std(void)
            "%.4f (error %+.2f%%)\n", mean, sd, target, 100 * (sd / target - 1),
            sqrt(gal_wind_variance(w)), 100 * (sd / sqrt(gal_wind_variance(w)) - 1));
     CHECK(fabs(mean) < 0.01 * target, "mean %g", mean);
-    CHECK_REL(sd, target, 0.02);
-    CHECK_REL(sd, sqrt(gal_wind_variance(w)), 0.02);
+    CHECK_REL(sd, target, 0.015);                      /* achieved -0.65% */
+    CHECK_REL(sd, sqrt(gal_wind_variance(w)), 0.015);
     /* access helpers agree with the stored histories; u_at interpolates and wraps */
     CHECK(gal_wind_u(w, 2, 7) == gal_wind_history(w, 2)[7], "u");
     CHECK(gal_wind_u(w, 2, M + 7) == gal_wind_history(w, 2)[7], "u periodic");
