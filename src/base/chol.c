@@ -38,6 +38,11 @@ gal_chol *gal_chol_alloc(const gal_csc *K)
     memcpy(Ap, K->colptr, (size_t)(K->n + 1) * sizeof(int));
     memcpy(Ai, K->rowind, (size_t)K->nnz * sizeof(int));
     f->L = cholmod_analyze(f->A, &f->c); /* fill-reducing ordering and symbolic factorization */
+    if (f->c.status == CHOLMOD_OUT_OF_MEMORY) {
+        gal_error(GAL_ENOMEM, "CHOLMOD: out of memory in the symbolic analysis of a %d x %d matrix "
+                  "(%d entries)", K->n, K->n, K->nnz);
+        return gal_chol_free(f);
+    }
     if (!f->L || f->c.status < 0) {
         gal_error(GAL_EFAIL, "CHOLMOD: symbolic analysis failed (status %d)", f->c.status);
         return gal_chol_free(f);
@@ -53,6 +58,10 @@ int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d
         for (int j = 0; j < K->n; j++) Ax[K->diag[j]] += shift * (d ? d[j] : 1.0);
     f->factorizations++;
     int ok = cholmod_factorize(f->A, f->L, &f->c);
+    /* out of memory is reported as memory, never as a matrix that is not positive definite (a
+     * physical statement: lost stability) */
+    if (f->c.status == CHOLMOD_OUT_OF_MEMORY)
+        return gal_error(GAL_ENOMEM, "CHOLMOD: out of memory factorizing a %d x %d matrix", f->n, f->n);
     if (!ok || f->c.status == CHOLMOD_NOT_POSDEF || f->L->minor < (size_t)f->n)
         return gal_error(GAL_EFAIL, "the stiffness matrix is not positive definite (pivot %ld of %d)",
                          (long)f->L->minor, f->n);
@@ -64,7 +73,9 @@ int gal_chol_solve(gal_chol *f, const double *b, double *x)
 {
     memcpy(f->B->x, b, (size_t)f->n * sizeof(double));
     if (!cholmod_solve2(CHOLMOD_A, f->L, f->B, NULL, &f->X, NULL, &f->Y, &f->E, &f->c))
-        return gal_error(GAL_EFAIL, "CHOLMOD: solve failed (status %d)", f->c.status);
+        return gal_error(f->c.status == CHOLMOD_OUT_OF_MEMORY ? GAL_ENOMEM : GAL_EFAIL,
+                         "CHOLMOD: solve failed (%s)", f->c.status == CHOLMOD_OUT_OF_MEMORY
+                                                           ? "out of memory" : "numerical failure");
     memcpy(x, f->X->x, (size_t)f->n * sizeof(double));
     f->solves++;
     return GAL_OK;

@@ -21,7 +21,8 @@ typedef struct gal_chol {
 gal_chol *gal_chol_alloc(const gal_csc *pattern);
 gal_chol *gal_chol_free(gal_chol *f);
 /* Factor K + shift * diag(d) (d NULL: the identity; shift 0: K alone). GAL_EFAIL when the
- * matrix is not positive definite (the message says at which column). */
+ * matrix is not positive definite (the message says at which column); GAL_ENOMEM when CHOLMOD ran
+ * out of memory (callers pass that on: it is not a statement about the matrix). */
 int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d);
 /* x = (K + shift D)^-1 b; x and b may be the same array. */
 int gal_chol_solve(gal_chol *f, const double *b, double *x);
