@@ -12,7 +12,7 @@ LIBS    := -lumfpack -lcholmod -lamd -lcolamd -lsuitesparseconfig -larpack -lgsl
 
 ifeq ($(SAN),1)
   OPT := -O1 -g
-  SANFLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+  SANFLAGS := -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=undefined,float-cast-overflow
   BUILD := build/san
 else
   SANFLAGS :=
