@@ -33,7 +33,7 @@ DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-de
             liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox
 STAMP    := build/.deps-ok
 
-.PHONY: all deps demo check bench report clean fuzz
+.PHONY: all deps demo check bench report clean fuzz mutate
 all: $(BUILD)/gallop $(BUILD)/libgallop.a
 
 # ---- Debian packages ----
@@ -90,6 +90,10 @@ demo: $(BUILD)/gallop
 
 check: $(BUILD)/gallop $(TEST_BIN)
 	@GALLOP=$(abspath $(BUILD)/gallop) bash tests/run.sh $(TEST_BIN) $(TEST_SH)
+
+# the suite's power: the mutants of tests/mutate/mutants.txt, each applied to a copy of the sources
+mutate: | $(STAMP)
+	@bash tests/mutate/run.sh $(MUTANTS)
 
 bench: $(BUILD)/gallop $(BUILD)/libgallop.a
 	@bash tests/bench/run.sh $(BUILD)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test program given on the command line (and the shell tests), adds up the
 # "#summary P F" lines and ends with "N passed, N failed"; exits non-zero on any failure.
+# FAIL_FAST=1 stops at the first failing program (make mutate).
 set -u
 passed=0; failed=0
 for t in "$@"; do
@@ -21,6 +22,8 @@ for t in "$@"; do
   else
     echo "  FAIL $name: no summary (exit status $rc, crashed?)"; failed=$((failed + 1))
   fi
+  # FAIL_FAST=1 (make mutate): stop at the first failing program
+  if [ -n "${FAIL_FAST:-}" ] && [ "$failed" -gt 0 ]; then break; fi
 done
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
