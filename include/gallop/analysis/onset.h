@@ -1,0 +1,100 @@
+/* onset.h: the galloping onset of the coupled aeroelastic system about the mean-wind equilibrium
+ * (issue 15). For each wind speed of a range:
+ *   1. the static equilibrium under the mean wind (drag, lift, moment: gal_loads_static), followed
+ *      by continuation from the previous speed; a jump of the path (a fold) is reported;
+ *   2. the linearization there of the full equations M u'' + C u' + K u = F(q + u, v):
+ *        K_t = K(q) - dF/dq,   C_t = C - dF/dv
+ *      with K the rod's tangent, C the structural damping (gal_damping: the one the dynamic models
+ *      apply), dF/dq and dF/dv the quasi-steady aerodynamic stiffness and damping, derivatives of
+ *      gal_loads_full's element loads (central differences element by element: each element's load
+ *      depends on its two nodes, its twist and its nodes' velocities only);
+ *   3. projected on the lowest `basis` natural modes of (K(q), M) at that speed, the state matrix
+ *      [0 I; -K_t -C_t] and its eigenvalues (LAPACK dgeev): lambda = -zeta w +- i w sqrt(1-zeta^2).
+ * The lowest `nmodes` aeroelastic modes at the first speed are followed over the speeds by
+ * continuity (MAC of the physical shapes, less the relative frequency change). The onset is the
+ * lowest speed at which a followed mode's damping ratio crosses zero (linear interpolation);
+ * torsional divergence is where the smallest real eigenvalue of K_t crosses zero. */
+#ifndef GALLOP_ONSET_H
+#define GALLOP_ONSET_H
+
+#include "gallop/loads/loads.h"
+#include "gallop/model/damping.h"
+#include "gallop/modes/modes.h"
+#include "gallop/rod/rod.h"
+
+#define GAL_ONSET_SPEED_MIN 0.5   /* m/s, defaults of [stability] speed_min, speed_max, speed_step */
+#define GAL_ONSET_SPEED_MAX 20.0
+#define GAL_ONSET_SPEED_STEP 0.25
+#define GAL_ONSET_BASIS 30        /* natural modes in the basis (converged: see tests/test_onset.c) */
+#define GAL_ONSET_NMODES 8        /* aeroelastic modes followed */
+
+typedef struct gal_onset_opts {
+    double speed_min, speed_max, speed_step; /* m/s; speed_min may be 0 */
+    int basis;        /* natural modes in the basis (capped at ndof - 1) */
+    unsigned families;/* bit (1u << gal_family) of the families the basis takes (0: all) */
+    int nmodes;       /* aeroelastic modes followed (at most basis) */
+    double static_tol;/* N, force tolerance of the static solutions (0: 1e-6 H / elements) */
+} gal_onset_opts;
+
+/* The mean-wind equilibrium and the classic criteria at one speed (mid-span values). */
+typedef struct gal_onset_speed {
+    double speed;          /* m/s */
+    int ok;                /* the static solution converged (else the rest is NaN) */
+    int fold;              /* the static path jumped between the previous speed and this one */
+    double swing_deg;      /* angle of the mid-span sag from the vertical, downwind positive */
+    double twist_deg;      /* mid-span twist */
+    double alpha_deg;      /* angle of attack of the mean wind at mid-span */
+    double den_hartog;     /* H = dC_L/dalpha + C_D at alpha (per rad) */
+    double den_hartog_onset; /* m/s: -4 m zeta w / (rho d H) of the lowest vertical natural mode at
+                              * this speed with the ratio the applied damping gives it; inf: H >= 0 */
+    double zeta_vertical;  /* that ratio */
+    double nigol_dcm;      /* dC_M/dalpha at alpha (per rad); Nigol: < 0 torsionally unstable */
+    double kt_min;         /* smallest real eigenvalue of the modal K_t, (rad/s)^2; < 0 diverged */
+} gal_onset_speed;
+
+/* One followed aeroelastic mode at one speed. */
+typedef struct gal_onset_mode {
+    double frequency_hz;   /* |Im lambda| / 2 pi; 0 for a real eigenvalue */
+    double damping_ratio;  /* -Re lambda / |lambda|; < 0 grows */
+    double growth_rate;    /* Re lambda, 1/s */
+    double share[3];       /* kinetic-energy shares: vertical, horizontal, torsional (+ axial = 1) */
+    double mac;            /* MAC with the same mode at the previous speed (1 at the first) */
+} gal_onset_mode;
+
+typedef struct gal_onset {
+    int nspeed, nmodes, basis;
+    gal_onset_speed *sp;   /* nspeed */
+    gal_onset_mode *m;     /* nspeed x nmodes: m[i * nmodes + k] */
+    double speed_max;      /* m/s, the range studied */
+    /* the onset: lowest speed where a followed mode's damping ratio crosses zero; NaN when stable
+     * over the whole range (index -1); speed_min when already unstable there */
+    double onset_speed;
+    int onset_mode;        /* index of the followed mode (0-based), -1 */
+    double onset_frequency_hz;
+    double onset_share[3]; /* vertical, horizontal, torsional at the onset (interpolated) */
+    double divergence_speed; /* m/s, kt_min crossing zero (interpolated); NaN: none */
+    double fold_speed;     /* m/s, the first jump of the static path (midpoint); NaN: none */
+    double wall_time_s;
+} gal_onset;
+
+void gal_onset_default_opts(gal_onset_opts *o);
+
+/* The analysis of a span `rod` (its reference configuration set at q_eq, the no-wind equilibrium)
+ * under the loads L (table, flags, air density, diameter, attack angle, direction as the runs
+ * use them; speed, turbulence and ramp ignored), with the structural damping C. `mass` (kg/m, the
+ * conductor and ice) is for the classic Den Hartog column. The rod's scratch values are used.
+ * GAL_OK, or GAL_EINPUT (bad options, no table), GAL_EFAIL (no equilibrium at the first speed,
+ * modes or LAPACK failed), GAL_ENOMEM. */
+int gal_onset_analyse(gal_rod *rod, const double *q_eq, const gal_loads *L, const gal_damping *C, double mass,
+                      const gal_onset_opts *o, gal_onset *out);
+void gal_onset_clear(gal_onset *r);
+
+/* ---- the linearization (onset_linear.c), for tests and other analyses ---- */
+
+/* Aerodynamic stiffness and damping projected on a basis Phi (ndof x n, column-major):
+ * Ka = -Phi^T dF/dq Phi, Ca = -Phi^T dF/dv Phi (n x n, column-major; either may be NULL), with F
+ * the generalized loads of gal_loads_full at configuration q and zero velocity. */
+int gal_onset_aero_matrices(const gal_rod *rod, const double *q, const gal_loads *L, const double *phi, int n,
+                            double *Ka, double *Ca);
+
+#endif
