@@ -1,0 +1,106 @@
+/* rom.h: the reduced model whose coupling is recomputed from the rod itself (issue 13; DESIGN.md
+ * "Time integration"). Basis V = [Phi, Theta]: the selected linear modes Phi and their static
+ * modal derivatives theta_ij = -K0^-1 (dK/d eta_j) phi_i (Idelsohn & Cardona 1985), which carry
+ * the stretching that the linear modes miss; V is M-orthonormalized and deflated (V^T M V = I).
+ * The equations are the full ones projected on V (Galerkin), with every term evaluated at the
+ * reconstructed rod state q = q_eq + V x:
+ *   x'' + Cr x' + V^T grad U(q) = V^T F(t, q, V x'),
+ *   Cr = V^T (alpha M + beta K0) V   (= alpha I + beta diag(w^2) on the modes: the full damping),
+ * so the internal force is conservative by construction (the gradient of U(q(x))) and there is no
+ * fitted range. The modal-derivative directions are stiff (axial): integrated implicitly by the
+ * generalized-alpha method with Newton on the reduced tangent V^T K(q) V. The model checks itself:
+ * gal_rom_residual rebuilds the full state and evaluates the full equations' residual
+ * M a + C v + grad U - F per family in a mass-weighted norm.
+ * Present limit: grad U and F are evaluated on every element (gal_rod_eval has no subset yet), so
+ * the cost of a step grows with the mesh; hyper-reduction (ECSW) plugs in at rom_internal(). */
+#ifndef GALLOP_ROM_H
+#define GALLOP_ROM_H
+
+#include "gallop/full/dynamics.h"
+#include "gallop/modes/modes.h"
+#include "gallop/rod/rod.h"
+
+typedef struct gal_rom_opts {
+    int derivatives;        /* 1: add the static modal derivatives (default); 0: linear modes only */
+    double deflation_tol;   /* drop a basis vector whose M-norm falls below this share after
+                             * orthogonalization; default 1e-6 */
+    double fd_step_m;       /* m: largest translation of the finite-difference steps; default 1e-3 */
+    double h;               /* s: time step; default 0.01 */
+    double rho_inf;         /* generalized-alpha spectral radius at infinite frequency; default 1 */
+    double rayleigh_mass;   /* 1/s: alpha of the full model's C = alpha M + beta K0 */
+    double rayleigh_stiffness; /* s: beta */
+    double newton_tol;      /* relative; default 1e-8 */
+    int max_newton;         /* per step; default 20 */
+} gal_rom_opts;
+
+/* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'
+ * residual at a reconstructed state, relative to the size of the terms of the same family. */
+typedef struct gal_rom_check {
+    double rel[GAL_FAMILY_COUNT];
+    double max;             /* the largest of rel */
+} gal_rom_check;
+
+typedef struct gal_rom {
+    const gal_rod *rod;
+    gal_rom_opts o;
+    int ndof, nq;
+    int r;                  /* basis size */
+    int nmodes;             /* the first nmodes columns of V are the selected modes */
+    double *V;              /* ndof x r, column-major, V^T M V = I */
+    double *omega2;         /* nmodes: (rad/s)^2 of the modes */
+    double *Cr;             /* r x r: V^T C V */
+    double *K0r;            /* r x r: V^T K0 V */
+    double *q_eq;           /* nq: the equilibrium */
+    gal_csc *K0;            /* the tangent at the equilibrium (the damping's) */
+    gal_force force;
+    double am, af, beta, gamma;
+    double fscale, ffloor;  /* reduced force scales of the Newton test: the weight of the nodes
+                             * projected, and the round-off of the elastic forces */
+    /* state */
+    double t;
+    double *x, *v, *a;      /* r */
+    double *fi, *fe;        /* r: internal and external reduced forces at the state */
+    /* workspace */
+    double *q, *vq, *gq, *fq;   /* nq */
+    double *wn, *wn2;           /* ndof */
+    double *x1, *v1, *a1, *fi1, *fe1, *res, *da, *J, *Kr; /* r, r x r */
+    int *piv;
+    gal_csc *K;
+    /* counters */
+    long steps, newton_iterations, tangents, force_evaluations;
+    double build_time_s;
+} gal_rom;
+
+void gal_rom_default_opts(gal_rom_opts *o);
+
+/* Build the basis about the equilibrium q_eq from the modes sel[0..nsel-1] of md (their shapes
+ * over the free dofs), and start at rest at q_eq. `force` (may be NULL) gives the external loads
+ * F(t, q, v) on the full configuration, as for the full model. NULL with a message on failure. */
+gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel, int nsel,
+                       const gal_rom_opts *o, const gal_force *force);
+gal_rom *gal_rom_free(gal_rom *m);
+
+/* Start at time t from the full state (q, v) (v may be NULL: at rest), projected on the basis:
+ * x = V^T M (q - q_eq). */
+int gal_rom_start(gal_rom *m, double t, const double *q, const double *v);
+/* One step of o.h; GAL_EFAIL with time and reason when Newton fails. */
+int gal_rom_step(gal_rom *m);
+/* Steps until t >= t_target - h/1000. */
+int gal_rom_advance(gal_rom *m, double t_target);
+
+/* The reconstructed full state: q = q_eq + V x, v = V x' (configuration-sized; either may be NULL). */
+void gal_rom_reconstruct(const gal_rom *m, double *q, double *v);
+/* Axial tension (N) of element j of the reconstructed rod. */
+double gal_rom_element_tension(const gal_rom *m, int j);
+/* Kinetic plus elastic and gravity energy of the reduced state, J. */
+double gal_rom_energy(gal_rom *m);
+/* The full equations' residual at the reconstructed state (see gal_rom_check). */
+int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
+/* The reduced internal force V^T grad U(q_eq + V x) (r entries). */
+int gal_rom_internal_force(gal_rom *m, const double *x, double *f);
+/* Kr = V^T K V (r x r) for a tangent K on the rod's pattern; work: ndof. */
+void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, double *work);
+/* Configuration entry qi of the reconstructed state (rate: of its velocity), O(r). */
+double gal_rom_entry(const gal_rom *m, int qi, int rate);
+
+#endif

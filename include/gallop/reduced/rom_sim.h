@@ -1,0 +1,29 @@
+/* rom_sim.h: a galloping run of a scene by the recomputed reduced model (rom.h) on the set-up the
+ * full model uses (gal_sim_setup: the same equilibrium, modes, loads and wind), written into a
+ * gal_sim_result like gal_sim_run's, with the self-check at regular times. The bridge until
+ * `gallop simulate` takes the model (issue 13). */
+#ifndef GALLOP_ROM_SIM_H
+#define GALLOP_ROM_SIM_H
+
+#include "gallop/reduced/rom.h"
+#include "gallop/run/sim.h"
+
+typedef struct gal_rom_sim_opts {
+    int derivatives;          /* basis with the modal derivatives (1, default) or modes only (0) */
+    double h;                 /* s: time step; <= 0: the full model's */
+    double check_interval;    /* s: residual check every so often (default 1) */
+    double check_from;        /* s: checks start then (default 0) */
+} gal_rom_sim_opts;
+
+typedef struct gal_rom_sim_info {
+    int basis;                /* basis size */
+    double residual_max;      /* the largest checked residual (gal_rom_check.max) */
+    double residual_family[GAL_FAMILY_COUNT]; /* the largest per family */
+    int checks;
+    double build_time_s;      /* the model's own set-up (after statics and modes) */
+} gal_rom_sim_info;
+
+void gal_rom_sim_default_opts(gal_rom_sim_opts *o);
+int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result *res, gal_rom_sim_info *info);
+
+#endif

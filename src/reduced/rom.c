@@ -1,0 +1,243 @@
+/* rom.c: time integration of the recomputed reduced model (rom.h) by the generalized-alpha method
+ * with Newton on the reduced tangent, its reconstruction of the full state and its self-check
+ * against the full equations' residual. With V^T M V = I the residual at the generalized
+ * mid-point is
+ *   R = a_m + Cr v_f + (1-af) (fi(x1) - fe1) + af (fi(x0) - fe0),
+ * a_m = (1-am) a1 + am a0, v_f = (1-af) v1 + af v0, and x1, v1 the Newmark updates in a1. */
+#include "gallop/reduced/rom.h"
+#include "gallop/base/core.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* q = q_eq + V x over the free dofs (m->q); the velocity V xd into m->vq when xd != NULL. */
+static void reconstruct(gal_rom *m, const double *x, const double *xd)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, r = m->r;
+    memcpy(m->q, m->q_eq, (size_t)m->nq * sizeof(double));
+    for (int d = 0; d < n; d++) {
+        double s = 0, sv = 0;
+        for (int k = 0; k < r; k++) {
+            double vk = m->V[(size_t)k * n + d];
+            s += vk * x[k];
+            if (xd) sv += vk * xd[k];
+        }
+        m->q[rod->free_q[d]] += s;
+        if (xd) m->vq[rod->free_q[d]] = sv;
+    }
+}
+
+/* f = V^T (free part of a configuration-sized vector g) */
+static void project(const gal_rom *m, const double *g, double *f)
+{
+    int n = m->ndof;
+    for (int k = 0; k < m->r; k++) {
+        const double *vk = m->V + (size_t)k * n;
+        double s = 0;
+        for (int d = 0; d < n; d++) s += vk[d] * g[m->rod->free_q[d]];
+        f[k] = s;
+    }
+}
+
+/* Internal force at x (and the reduced tangent into Kr when Kr != NULL). */
+static int internal(gal_rom *m, const double *x, double *f, double *Kr)
+{
+    reconstruct(m, x, NULL);
+    int st = gal_rod_eval(m->rod, m->q, NULL, m->gq, Kr ? m->K : NULL);
+    if (st) return st;
+    project(m, m->gq, f);
+    if (Kr) {
+        gal_rom_project_tangent(m, m->K, Kr, m->wn);
+        m->tangents++;
+    }
+    return GAL_OK;
+}
+
+/* External force at (t, x, xd). */
+static int external(gal_rom *m, double t, const double *x, const double *xd, double *f)
+{
+    if (!m->force.eval) { memset(f, 0, (size_t)m->r * sizeof(double)); return GAL_OK; }
+    reconstruct(m, x, xd);
+    memset(m->fq, 0, (size_t)m->nq * sizeof(double));
+    m->force_evaluations++;
+    int st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
+    if (st) return st;
+    project(m, m->fq, f);
+    return GAL_OK;
+}
+
+int gal_rom_internal_force(gal_rom *m, const double *x, double *f)
+{
+    return internal(m, x, f, NULL);
+}
+
+/* LU with partial pivoting of the r x r row-major A in place; 0 on success. */
+static int lu_factor(double *A, int r, int *piv)
+{
+    for (int k = 0; k < r; k++) {
+        int p = k;
+        for (int i = k + 1; i < r; i++)
+            if (fabs(A[i * r + k]) > fabs(A[p * r + k])) p = i;
+        piv[k] = p;
+        if (A[p * r + k] == 0) return -1;
+        if (p != k)
+            for (int j = 0; j < r; j++) { double t = A[k * r + j]; A[k * r + j] = A[p * r + j]; A[p * r + j] = t; }
+        for (int i = k + 1; i < r; i++) {
+            double l = A[i * r + k] /= A[k * r + k];
+            for (int j = k + 1; j < r; j++) A[i * r + j] -= l * A[k * r + j];
+        }
+    }
+    return 0;
+}
+
+static void lu_solve(const double *A, int r, const int *piv, double *b)
+{
+    for (int k = 0; k < r; k++) {
+        double t = b[piv[k]]; b[piv[k]] = b[k]; b[k] = t;
+        for (int i = k + 1; i < r; i++) b[i] -= A[i * r + k] * b[k];
+    }
+    for (int k = r - 1; k >= 0; k--) {
+        for (int j = k + 1; j < r; j++) b[k] -= A[k * r + j] * b[j];
+        b[k] /= A[k * r + k];
+    }
+}
+
+int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, r = m->r;
+    m->t = t;
+    /* x = V^T M (q - q_eq), x' = V^T M v */
+    for (int s = 0; s < 2; s++) {
+        double *dst = s ? m->v : m->x;
+        if (s && !v) { memset(dst, 0, (size_t)r * sizeof(double)); break; }
+        for (int d = 0; d < n; d++) {
+            int k = rod->free_q[d];
+            m->wn2[d] = s ? v[k] : q[k] - m->q_eq[k];
+        }
+        gal_rod_mass_mult(rod, m->wn2, m->wn);
+        for (int k = 0; k < r; k++) {
+            double e = 0;
+            for (int d = 0; d < n; d++) e += m->V[(size_t)k * n + d] * m->wn[d];
+            dst[k] = e;
+        }
+    }
+    int st = internal(m, m->x, m->fi, NULL);
+    if (!st) st = external(m, t, m->x, m->v, m->fe);
+    if (st) return st;
+    /* a = fe - fi - Cr v */
+    for (int i = 0; i < r; i++) {
+        double c = 0;
+        for (int j = 0; j < r; j++) c += m->Cr[i * r + j] * m->v[j];
+        m->a[i] = m->fe[i] - m->fi[i] - c;
+    }
+    return GAL_OK;
+}
+
+/* The Newmark updates of x1, v1 from the current a1. */
+static void newmark(gal_rom *m, double h)
+{
+    for (int k = 0; k < m->r; k++) {
+        m->x1[k] = m->x[k] + h * m->v[k] + h * h * ((0.5 - m->beta) * m->a[k] + m->beta * m->a1[k]);
+        m->v1[k] = m->v[k] + h * ((1 - m->gamma) * m->a[k] + m->gamma * m->a1[k]);
+    }
+}
+
+/* Residual at the generalized mid-point into m->res; returns its largest entry over the Newton
+ * tolerance (converged at <= 1). */
+static double residual(gal_rom *m)
+{
+    int r = m->r;
+    double am = m->am, af = m->af, rn = 0, sc = 0;
+    for (int i = 0; i < r; i++) {
+        double c = 0;
+        for (int j = 0; j < r; j++) c += m->Cr[i * r + j] * ((1 - af) * m->v1[j] + af * m->v[j]);
+        m->res[i] = (1 - am) * m->a1[i] + am * m->a[i] + c + (1 - af) * (m->fi1[i] - m->fe1[i]) +
+                    af * (m->fi[i] - m->fe[i]);
+        rn = fmax(rn, fabs(m->res[i]));
+        sc = fmax(sc, fabs(m->fi1[i]) + fabs(m->fe1[i]));
+    }
+    return rn / fmax(m->o.newton_tol * fmax(sc, m->fscale), m->ffloor);
+}
+
+int gal_rom_step(gal_rom *m)
+{
+    int r = m->r, st = GAL_OK;
+    double h = m->o.h, af = m->af, t1 = m->t + h;
+    memcpy(m->a1, m->a, (size_t)r * sizeof(double));
+    int it, conv = 0;
+    for (it = 0; it < m->o.max_newton; it++) {
+        newmark(m, h);
+        int fresh = it % 4 == 0; /* the tangent at the step's start, refreshed every 4 iterations */
+        if ((st = internal(m, m->x1, m->fi1, fresh ? m->Kr : NULL))) break;
+        if ((st = external(m, t1, m->x1, m->v1, m->fe1))) break;
+        if (residual(m) <= 1) { conv = 1; break; }
+        if (fresh) {
+            double cm = 1 - m->am, cc = (1 - af) * m->gamma * h, ck = (1 - af) * m->beta * h * h;
+            for (int k = 0; k < r * r; k++) m->J[k] = cc * m->Cr[k] + ck * m->Kr[k];
+            for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
+            if (lu_factor(m->J, r, m->piv)) { st = gal_error(GAL_EFAIL, "reduced model: singular iteration matrix"); break; }
+        }
+        for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
+        lu_solve(m->J, r, m->piv, m->da);
+        for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
+        m->newton_iterations++;
+    }
+    if (!st && !conv)
+        st = gal_error(GAL_EFAIL, "reduced model: Newton did not converge in %d iterations at t = %.6g s "
+                       "(time step %g s)", m->o.max_newton, t1, h);
+    if (st) return gal_error(st, "at t = %.6g s: %s", t1, gal_error_message());
+    memcpy(m->x, m->x1, (size_t)r * sizeof(double));
+    memcpy(m->v, m->v1, (size_t)r * sizeof(double));
+    memcpy(m->a, m->a1, (size_t)r * sizeof(double));
+    memcpy(m->fi, m->fi1, (size_t)r * sizeof(double));
+    memcpy(m->fe, m->fe1, (size_t)r * sizeof(double));
+    m->t = t1;
+    m->steps++;
+    return GAL_OK;
+}
+
+int gal_rom_advance(gal_rom *m, double t_target)
+{
+    while (m->t < t_target - 1e-3 * m->o.h) {
+        int st = gal_rom_step(m);
+        if (st) return st;
+    }
+    return GAL_OK;
+}
+
+void gal_rom_reconstruct(const gal_rom *m, double *q, double *v)
+{
+    gal_rom *mm = (gal_rom *)m; /* the workspace only */
+    reconstruct(mm, m->x, m->v);
+    if (q) memcpy(q, m->q, (size_t)m->nq * sizeof(double));
+    if (v) memcpy(v, m->vq, (size_t)m->nq * sizeof(double));
+}
+
+double gal_rom_entry(const gal_rom *m, int qi, int rate)
+{
+    int d = m->rod->dof[qi];
+    double s = rate ? 0 : m->q_eq[qi];
+    if (d < 0) return s;
+    const double *y = rate ? m->v : m->x;
+    for (int k = 0; k < m->r; k++) s += m->V[(size_t)k * m->ndof + d] * y[k];
+    return s;
+}
+
+double gal_rom_element_tension(const gal_rom *m, int j)
+{
+    double e[3];
+    for (int k = 0; k < 3; k++) e[k] = gal_rom_entry(m, 3 * (j + 1) + k, 0) - gal_rom_entry(m, 3 * j + k, 0);
+    return m->rod->p.EA * (sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) / m->rod->l0[j] - 1);
+}
+
+double gal_rom_energy(gal_rom *m)
+{
+    double U = 0, T = 0;
+    reconstruct(m, m->x, NULL);
+    if (gal_rod_eval(m->rod, m->q, &U, NULL, NULL)) return NAN;
+    for (int k = 0; k < m->r; k++) T += 0.5 * m->v[k] * m->v[k];
+    return T + U;
+}

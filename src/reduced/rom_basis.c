@@ -1,0 +1,189 @@
+/* rom_basis.c: the basis of the recomputed reduced model (rom.h): the selected modes and their
+ * static modal derivatives theta_ij = -K0^-1 (dK/d eta_j) phi_i, the directional derivative of the
+ * tangent by central differences of gal_rod_eval's tangent along phi_j and one factorization of
+ * K0; then M-orthonormalized (modified Gram-Schmidt, twice) and deflated. Also the model's
+ * allocation and its reduced matrices. */
+#include "gallop/reduced/rom.h"
+#include "gallop/base/core.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/chol.h"
+
+void gal_rom_default_opts(gal_rom_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->derivatives = 1;
+    o->deflation_tol = 1e-6;
+    o->fd_step_m = 1e-3;
+    o->h = 0.01;
+    o->rho_inf = 1.0;
+    o->newton_tol = 1e-8;
+    o->max_newton = 20;
+}
+
+gal_rom *gal_rom_free(gal_rom *m)
+{
+    if (!m) return NULL;
+    free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
+    gal_csc_free(m->K0); gal_csc_free(m->K);
+    free(m->x); free(m->v); free(m->a); free(m->fi); free(m->fe);
+    free(m->q); free(m->vq); free(m->gq); free(m->fq); free(m->wn); free(m->wn2);
+    free(m->x1); free(m->v1); free(m->a1); free(m->fi1); free(m->fe1); free(m->res); free(m->da);
+    free(m->J); free(m->Kr); free(m->piv);
+    free(m);
+    return NULL;
+}
+
+/* u^T M c over the free dofs, with Mu = M u given. */
+static double dot(const double *a, const double *b, int n)
+{
+    double s = 0;
+    for (int k = 0; k < n; k++) s += a[k] * b[k];
+    return s;
+}
+
+/* Append candidate c (overwritten) to the M-orthonormal columns V[0..*r-1] (MV their M-images)
+ * unless what is left after orthogonalization is below tol of its M-norm. */
+static void orth_append(const gal_rod *rod, double *V, double *MV, int *r, double *c, double *Mc, double tol)
+{
+    int n = rod->ndof;
+    gal_rod_mass_mult(rod, c, Mc);
+    double n0 = sqrt(fmax(dot(c, Mc, n), 0));
+    if (!(n0 > 0)) return;
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; k < *r; k++) {
+            double p = dot(MV + (size_t)k * n, c, n);
+            for (int d = 0; d < n; d++) c[d] -= p * V[(size_t)k * n + d];
+        }
+    gal_rod_mass_mult(rod, c, Mc);
+    double n1 = sqrt(fmax(dot(c, Mc, n), 0));
+    if (!(n1 > tol * n0)) return;
+    for (int d = 0; d < n; d++) V[(size_t)*r * n + d] = c[d] / n1, MV[(size_t)*r * n + d] = Mc[d] / n1;
+    (*r)++;
+}
+
+/* The modal derivatives of the nsel modes (columns of V) appended to V. */
+static int derivatives(gal_rom *m, double *MV, int nsel)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, nq = m->nq, st = GAL_OK;
+    gal_csc *Kp = gal_csc_clone(rod->K), *Km = gal_csc_clone(rod->K);
+    gal_chol *ch = gal_chol_alloc(rod->K);
+    double *w = malloc((size_t)4 * n * sizeof(double)), *qp = malloc((size_t)nq * sizeof(double));
+    if (!Kp || !Km || !ch || !w || !qp) { st = gal_error(GAL_ENOMEM, "reduced model: out of memory"); goto done; }
+    if ((st = gal_chol_factor(ch, m->K0, 0, NULL))) {
+        st = gal_error(GAL_EFAIL, "reduced model: the tangent at the equilibrium is not positive definite (%s)",
+                       gal_error_message());
+        goto done;
+    }
+    for (int j = 0; j < nsel && !st; j++) {
+        const double *pj = m->V + (size_t)j * n;
+        double mx = 0;
+        for (int d = 0; d < n; d++) mx = fmax(mx, fabs(pj[d]));
+        double e = m->o.fd_step_m / mx;
+        for (int s = 0; s < 2 && !st; s++) {
+            memcpy(qp, m->q_eq, (size_t)nq * sizeof(double));
+            for (int d = 0; d < n; d++) qp[rod->free_q[d]] += (s ? -e : e) * pj[d];
+            st = gal_rod_eval(rod, qp, NULL, NULL, s ? Km : Kp);
+        }
+        for (int i = 0; i <= j && !st; i++) {
+            const double *pi = m->V + (size_t)i * n;
+            gal_csc_symv(Kp, pi, w);
+            gal_csc_symv(Km, pi, w + n);
+            for (int d = 0; d < n; d++) w[d] = -(w[d] - w[n + d]) / (2 * e);
+            if ((st = gal_chol_solve(ch, w, w))) break;
+            orth_append(rod, m->V, MV, &m->r, w, w + 2 * n, m->o.deflation_tol);
+        }
+    }
+done:
+    gal_csc_free(Kp); gal_csc_free(Km); gal_chol_free(ch);
+    free(w); free(qp);
+    return st;
+}
+
+static int alloc_state(gal_rom *m, int rmax)
+{
+    int n = m->ndof, nq = m->nq, r = rmax;
+    size_t br = (size_t)r * sizeof(double);
+    m->V = malloc((size_t)n * r * sizeof(double));
+    m->Cr = malloc(br * r), m->K0r = malloc(br * r), m->J = malloc(br * r), m->Kr = malloc(br * r);
+    m->q_eq = malloc((size_t)nq * sizeof(double));
+    m->q = malloc((size_t)nq * sizeof(double)), m->vq = calloc(nq, sizeof(double));
+    m->gq = malloc((size_t)nq * sizeof(double)), m->fq = malloc((size_t)nq * sizeof(double));
+    m->wn = malloc((size_t)n * sizeof(double)), m->wn2 = malloc((size_t)n * sizeof(double));
+    m->x = calloc(r, sizeof(double)), m->v = calloc(r, sizeof(double)), m->a = calloc(r, sizeof(double));
+    m->fi = calloc(r, sizeof(double)), m->fe = calloc(r, sizeof(double));
+    m->x1 = malloc(br), m->v1 = malloc(br), m->a1 = malloc(br), m->fi1 = malloc(br), m->fe1 = malloc(br);
+    m->res = malloc(br), m->da = malloc(br), m->piv = malloc((size_t)r * sizeof(int));
+    m->K0 = gal_csc_clone(m->rod->K), m->K = gal_csc_clone(m->rod->K);
+    if (!m->V || !m->Cr || !m->K0r || !m->J || !m->Kr || !m->q_eq || !m->q || !m->vq || !m->gq || !m->fq ||
+        !m->wn || !m->wn2 || !m->x || !m->v || !m->a || !m->fi || !m->fe || !m->x1 || !m->v1 || !m->a1 ||
+        !m->fi1 || !m->fe1 || !m->res || !m->da || !m->piv || !m->K0 || !m->K)
+        return gal_error(GAL_ENOMEM, "reduced model: out of memory for a basis of %d", r);
+    return GAL_OK;
+}
+
+/* Kr = V^T K V (r x r, row-major) for the tangent K. */
+void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, double *work)
+{
+    int n = m->ndof, r = m->r;
+    for (int j = 0; j < r; j++) {
+        gal_csc_symv(K, m->V + (size_t)j * n, work);
+        for (int i = 0; i <= j; i++) Kr[i * r + j] = Kr[j * r + i] = dot(m->V + (size_t)i * n, work, n);
+    }
+}
+
+gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel, int nsel,
+                       const gal_rom_opts *o, const gal_force *force)
+{
+    double t0 = gal_wall_time();
+    if (nsel < 1) { gal_error(GAL_EINPUT, "reduced model: no modes selected"); return NULL; }
+    gal_rom *m = calloc(1, sizeof *m);
+    if (!m) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return NULL; }
+    m->rod = rod, m->ndof = rod->ndof, m->nq = rod->nq, m->nmodes = nsel;
+    if (o) m->o = *o;
+    else gal_rom_default_opts(&m->o);
+    if (force) m->force = *force;
+    int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0);
+    double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc((size_t)2 * n * sizeof(double));
+    m->omega2 = malloc((size_t)nsel * sizeof(double));
+    if (!MV || !c || !m->omega2 || alloc_state(m, rmax)) goto fail;
+    memcpy(m->q_eq, q_eq, (size_t)m->nq * sizeof(double));
+    if (gal_rod_eval(rod, q_eq, NULL, m->gq, m->K0)) goto fail;
+    for (int k = 0; k < nsel; k++) {
+        if (sel[k] < 0 || sel[k] >= md->n) { gal_error(GAL_EINPUT, "reduced model: mode %d not computed", sel[k]); goto fail; }
+        m->omega2[k] = md->mode[sel[k]].omega * md->mode[sel[k]].omega;
+        memcpy(c, md->shape + (size_t)sel[k] * n, (size_t)n * sizeof(double));
+        int r0 = m->r;
+        orth_append(rod, m->V, MV, &m->r, c, c + n, 1e-3);
+        if (m->r == r0) { gal_error(GAL_EFAIL, "reduced model: mode %d repeats the others", sel[k]); goto fail; }
+    }
+    if (m->o.derivatives && derivatives(m, MV, nsel)) goto fail;
+    gal_rom_project_tangent(m, m->K0, m->K0r, c);
+    int r = m->r;
+    for (int i = 0; i < r; i++)
+        for (int j = 0; j < r; j++) m->Cr[i * r + j] = m->o.rayleigh_stiffness * m->K0r[i * r + j] + (i == j) * m->o.rayleigh_mass;
+    double rho = m->o.rho_inf;
+    m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
+    m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);
+    /* force scales: |V^T (node weights in every direction)| and eps L EA/l0 times the largest
+     * column sum of |V| */
+    double fs = 0, cs = 0;
+    for (int k = 0; k < r; k++) {
+        double p = 0, s = 0;
+        for (int d = 0; d < n; d++) p += m->V[(size_t)k * n + d] * rod->mdiag[d] * 9.81, s += fabs(m->V[(size_t)k * n + d]);
+        fs += p * p, cs = fmax(cs, s);
+    }
+    m->fscale = sqrt(fs);
+    m->ffloor = 20 * 2.2e-16 * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0] * cs;
+    free(MV); free(c);
+    if (gal_rom_start(m, 0.0, q_eq, NULL)) return gal_rom_free(m);
+    m->build_time_s = gal_wall_time() - t0;
+    return m;
+fail:
+    free(MV); free(c);
+    return gal_rom_free(m);
+}

@@ -1,0 +1,97 @@
+/* rom_check.c: the reduced model's self-check (rom.h): the full equations' residual
+ *   R = M a + C v + grad U(q) - F(t, q, v)
+ * at the reconstructed state, split into the families of the motion (vertical: in the plane of
+ * the span, normal to the conductor at equilibrium; horizontal: out of that plane; axial: along
+ * it; torsional: the twist), each measured in the mass-weighted norm |y|^2 = sum y_d^2 / m_d and
+ * set against the same norm of the terms of its own family (so that the axial forces, large and
+ * balanced, do not swamp the transverse ones). */
+#include "gallop/reduced/rom.h"
+#include "gallop/base/core.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gallop/base/vec3.h"
+
+enum { TERM_R, TERM_MA, TERM_CV, TERM_G, TERM_F, NTERM };
+
+/* Accumulate sum y^2/m per family of the free-dof vector y into acc[family]. */
+static void accumulate(const gal_rom *m, const double *y, const double *mdiag, double *acc)
+{
+    const gal_rod *rod = m->rod;
+    int nn = rod->nn;
+    for (int i = 0; i < nn; i++) {
+        int d0 = rod->dof[3 * i];
+        if (d0 < 0 || rod->dof[3 * i + 1] != d0 + 1 || rod->dof[3 * i + 2] != d0 + 2) continue;
+        /* directions at node i from the equilibrium chord of its neighbours */
+        int a = i > 0 ? i - 1 : i, b = i < nn - 1 ? i + 1 : i;
+        double t[3], ey[3] = {0, 1, 0}, nv[3];
+        for (int k = 0; k < 3; k++) t[k] = m->q_eq[3 * b + k] - m->q_eq[3 * a + k];
+        double lt = gal_norm3(t);
+        for (int k = 0; k < 3; k++) t[k] /= lt;
+        double ty = gal_dot3(ey, t);
+        for (int k = 0; k < 3; k++) ey[k] -= ty * t[k];
+        double ly = gal_norm3(ey);
+        for (int k = 0; k < 3; k++) ey[k] /= ly;
+        gal_cross3(t, ey, nv);
+        double yv = gal_dot3(nv, y + d0), yh = gal_dot3(ey, y + d0), ya = gal_dot3(t, y + d0);
+        double w = 1.0 / mdiag[d0];
+        acc[GAL_FAMILY_VERTICAL] += yv * yv * w;
+        acc[GAL_FAMILY_HORIZONTAL] += yh * yh * w;
+        acc[GAL_FAMILY_AXIAL] += ya * ya * w;
+    }
+    if (rod->p.torsion)
+        for (int j = 0; j < rod->p.elements; j++) {
+            int d = rod->dof[3 * nn + j];
+            if (d >= 0) acc[GAL_FAMILY_TORSIONAL] += y[d] * y[d] / mdiag[d];
+        }
+}
+
+int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, r = m->r, st = GAL_OK;
+    memset(chk, 0, sizeof *chk);
+    double *w = calloc((size_t)(NTERM + 2) * n, sizeof(double));
+    if (!w) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the residual");
+    double *y[NTERM], *vf = w + NTERM * n, *af = vf + n;
+    for (int k = 0; k < NTERM; k++) y[k] = w + (size_t)k * n;
+    /* the full velocity and acceleration over the free dofs */
+    for (int d = 0; d < n; d++) {
+        double sv = 0, sa = 0;
+        for (int k = 0; k < r; k++) sv += m->V[(size_t)k * n + d] * m->v[k], sa += m->V[(size_t)k * n + d] * m->a[k];
+        vf[d] = sv, af[d] = sa;
+    }
+    gal_rod_mass_mult(rod, af, y[TERM_MA]);
+    gal_rod_mass_mult(rod, vf, y[TERM_CV]);
+    gal_csc_symv(m->K0, vf, y[TERM_G]); /* scratch */
+    for (int d = 0; d < n; d++) y[TERM_CV][d] = m->o.rayleigh_mass * y[TERM_CV][d] + m->o.rayleigh_stiffness * y[TERM_G][d];
+    gal_rom_reconstruct(m, NULL, NULL); /* into m->q, m->vq */
+    if ((st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL))) goto done;
+    memset(m->fq, 0, (size_t)m->nq * sizeof(double));
+    if (m->force.eval && (st = m->force.eval(m->force.ctx, m->t, m->q, m->vq, m->fq))) goto done;
+    gal_rod_gather(rod, m->gq, y[TERM_G]);
+    gal_rod_gather(rod, m->fq, y[TERM_F]);
+    for (int d = 0; d < n; d++) y[TERM_R][d] = y[TERM_MA][d] + y[TERM_CV][d] + y[TERM_G][d] - y[TERM_F][d];
+    double acc[NTERM][GAL_FAMILY_COUNT];
+    memset(acc, 0, sizeof acc);
+    for (int k = 0; k < NTERM; k++) accumulate(m, y[k], rod->mdiag, acc[k]);
+    /* floors: 1% of the weight of the span (translations) and of its angular counterpart g / rho_g
+     * with rho_g the section's radius of gyration (twist), in the same norm */
+    double mt = 0, it = 0;
+    for (int d = 0; d < n; d++) {
+        if (rod->free_q[d] < 3 * rod->nn) mt += rod->mdiag[d] / 3;
+        else it += rod->mdiag[d];
+    }
+    double g = 9.81, rg = rod->p.mass > 0 && rod->p.polar_inertia > 0 ? sqrt(rod->p.polar_inertia / rod->p.mass) : 1;
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) {
+        double scale = 1e-2 * (f == GAL_FAMILY_TORSIONAL ? sqrt(it) * g / rg : sqrt(mt) * g);
+        for (int k = TERM_MA; k < NTERM; k++) scale += sqrt(acc[k][f]);
+        chk->rel[f] = scale > 0 ? sqrt(acc[TERM_R][f]) / scale : 0;
+        chk->max = fmax(chk->max, chk->rel[f]);
+    }
+done:
+    free(w);
+    return st;
+}

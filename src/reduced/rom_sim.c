@@ -1,0 +1,133 @@
+/* rom_sim.c: a run of a scene by the recomputed reduced model on the full model's set-up: the same
+ * sampling, time step, Rayleigh damping, loads and probes as gal_sim_run, with the residual
+ * self-check every check_interval seconds. */
+#include "gallop/reduced/rom_sim.h"
+#include "gallop/base/core.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void gal_rom_sim_default_opts(gal_rom_sim_opts *o)
+{
+    o->derivatives = 1;
+    o->h = 0;
+    o->check_interval = 1.0;
+    o->check_from = 0;
+}
+
+/* as sim.c: zeta = a/(2w) + b w/2 at the lowest and highest selected modes */
+static void rayleigh(double zeta, double w1, double w2, double *a, double *b)
+{
+    if (zeta <= 0) { *a = *b = 0; return; }
+    if (!(w2 > w1 * 1.0001)) w2 = 3 * w1;
+    *a = 2 * zeta * w1 * w2 / (w1 + w2);
+    *b = 2 * zeta / (w1 + w2);
+}
+
+/* One sample row (horizontal, vertical, along, twist per probe) and the support tensions. */
+static void sample(const gal_rom *m, const gal_sim_result *res, long i)
+{
+    const gal_rod *rod = m->rod;
+    int nel = rod->p.elements, nn = rod->nn;
+    double *row = res->trace + (size_t)i * 4 * res->nprobe;
+    for (int k = 0; k < res->nprobe; k++) {
+        double s = res->probe[k] * nel, se = s - 0.5;
+        int e = (int)s < nel - 1 ? (int)s : nel - 1, e0 = (int)floor(se);
+        double xi = s - e, w1 = se - e0;
+        if (e0 < 0) e0 = 0, w1 = 0;
+        if (e0 >= nel - 1) e0 = nel - 1, w1 = 0;
+        int e1 = e0 + 1 < nel ? e0 + 1 : e0;
+        double d[3];
+        for (int c = 0; c < 3; c++)
+            d[c] = (1 - xi) * (gal_rom_entry(m, 3 * e + c, 0) - m->q_eq[3 * e + c]) +
+                   xi * (gal_rom_entry(m, 3 * (e + 1) + c, 0) - m->q_eq[3 * (e + 1) + c]);
+        double th = 0;
+        if (rod->p.torsion)
+            th = (1 - w1) * (gal_rom_entry(m, 3 * nn + e0, 0) - m->q_eq[3 * nn + e0]) +
+                 w1 * (gal_rom_entry(m, 3 * nn + e1, 0) - m->q_eq[3 * nn + e1]);
+        row[4 * k] = d[1], row[4 * k + 1] = d[2], row[4 * k + 2] = d[0], row[4 * k + 3] = th * 180 / GAL_PI;
+    }
+    res->tension[2 * i] = gal_rom_element_tension(m, 0);
+    res->tension[2 * i + 1] = gal_rom_element_tension(m, nel - 1);
+}
+
+static int run_loop(gal_rom *m, const gal_rom_sim_opts *o, gal_sim_result *res, int sub, gal_rom_sim_info *info)
+{
+    double next_check = o->check_from;
+    for (long i = 0; i < res->nsamples; i++) {
+        if (i > 0)
+            for (int k = 0; k < sub; k++) {
+                int st = gal_rom_step(m);
+                if (st) return st;
+            }
+        sample(m, res, i);
+        if (o->check_interval > 0 && m->t >= next_check - 1e-9) {
+            gal_rom_check chk;
+            int st = gal_rom_residual(m, &chk);
+            if (st) return st;
+            info->checks++;
+            info->residual_max = fmax(info->residual_max, chk.max);
+            for (int f = 0; f < GAL_FAMILY_COUNT; f++) info->residual_family[f] = fmax(info->residual_family[f], chk.rel[f]);
+            next_check += o->check_interval;
+        }
+    }
+    return GAL_OK;
+}
+
+int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result *res, gal_rom_sim_info *info)
+{
+    const gal_scene *sc = s->sc;
+    const gal_rod *rod = s->eq.rod;
+    const gal_modes *md = &s->md;
+    gal_rom_sim_opts od;
+    if (!o) gal_rom_sim_default_opts(&od), o = &od;
+    memset(res, 0, sizeof *res);
+    memset(info, 0, sizeof *info);
+    res->kind = GAL_MODEL_REDUCED;
+    res->nprobe = sc->simulation.nprobes;
+    memcpy(res->probe, sc->simulation.probes, sizeof res->probe);
+    int sel[64], r = 0;
+    double fhi = 0, wmin = INFINITY, wmax = 0;
+    for (int k = 0; k < md->n && r < 64; k++)
+        if (md->mode[k].selected) {
+            sel[r++] = k;
+            fhi = fmax(fhi, md->mode[k].frequency_hz);
+            if (md->mode[k].omega > 0) wmin = fmin(wmin, md->mode[k].omega);
+            wmax = fmax(wmax, md->mode[k].omega);
+        }
+    double dt_out = sc->simulation.output_interval;
+    if (!(dt_out > 0)) dt_out = fmin(0.05, 1.0 / (10 * fhi));
+    double h = o->h > 0 ? o->h : sc->simulation.time_step;
+    if (!(h > 0)) h = fmin(dt_out, 1.0 / (40 * fhi));
+    int sub = (int)ceil(dt_out / h - 1e-9);
+    res->dt_out = dt_out;
+    long ns = res->nsamples = (long)floor(sc->simulation.duration / dt_out + 1e-9) + 1;
+    res->time = malloc((size_t)ns * sizeof(double));
+    res->trace = calloc((size_t)ns * 4 * res->nprobe, sizeof(double));
+    res->tension = calloc((size_t)ns * 2, sizeof(double));
+    if (!res->time || !res->trace || !res->tension) return gal_error(GAL_ENOMEM, "reduced run: out of memory");
+    for (long i = 0; i < ns; i++) res->time[i] = i * dt_out;
+    double tb = gal_wall_time();
+    gal_rom_opts ro;
+    gal_rom_default_opts(&ro);
+    ro.derivatives = o->derivatives;
+    ro.h = dt_out / sub;
+    ro.rho_inf = sc->simulation.rho_inf;
+    rayleigh(sc->effect[GAL_FX_DAMPING] ? sc->conductor.damping_ratio : 0, wmin, wmax, &ro.rayleigh_mass, &ro.rayleigh_stiffness);
+    gal_force F = {0};
+    if (s->loads.table) F.eval = gal_loads_full, F.ctx = &s->loads;
+    gal_rom *m = gal_rom_alloc(rod, s->eq.q, md, sel, r, &ro, &F);
+    if (!m) return GAL_EFAIL;
+    int st = gal_rom_start(m, 0.0, s->q_start, NULL);
+    info->build_time_s = res->build_time_s = gal_wall_time() - tb;
+    info->basis = res->basis = m->r;
+    double t0 = gal_wall_time();
+    if (!st) st = run_loop(m, o, res, sub, info);
+    res->wall_time_s = gal_wall_time() - t0;
+    res->steps = m->steps, res->newton_iterations = m->newton_iterations;
+    res->force_evaluations = m->force_evaluations, res->factorizations = m->tangents;
+    res->time_step_s = ro.h;
+    gal_rom_free(m);
+    return st;
+}
