@@ -167,18 +167,28 @@ int gal_rom_step(gal_rom *m)
     int r = m->r, st = GAL_OK;
     double h = m->o.h, af = m->af, t1 = m->t + h;
     memcpy(m->a1, m->a, (size_t)r * sizeof(double));
-    int it, conv = 0;
+    int it, conv = 0, fresh = 1;
+    double prev = INFINITY;
     for (it = 0; it < m->o.max_newton; it++) {
         newmark(m, h);
-        int fresh = it % 4 == 0; /* the tangent at the step's start, refreshed every 4 iterations */
+        /* the tangent again whenever the last iteration did not gain a factor of 10 (the
+         * stretching directions are strongly nonlinear) */
         if ((st = internal(m, m->x1, m->fi1, fresh ? m->Kr : NULL))) break;
         if ((st = external(m, t1, m->x1, m->v1, m->fe1))) break;
-        if (residual(m) <= 1) { conv = 1; break; }
+        double rn = residual(m);
+        if (rn <= 1) { conv = 1; break; }
+        if (!isfinite(rn)) { st = gal_error(GAL_EFAIL, "reduced model: the residual is not finite"); break; }
+        if (!fresh && rn > 0.1 * prev) {
+            fresh = 1;
+            if ((st = internal(m, m->x1, m->fi1, m->Kr))) break;
+        }
+        prev = rn;
         if (fresh) {
             double cm = 1 - m->am, cc = (1 - af) * m->gamma * h, ck = (1 - af) * m->beta * h * h;
             for (int k = 0; k < r * r; k++) m->J[k] = cc * m->Cr[k] + ck * m->Kr[k];
             for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
             if (lu_factor(m->J, r, m->piv)) { st = gal_error(GAL_EFAIL, "reduced model: singular iteration matrix"); break; }
+            fresh = 0;
         }
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
         lu_solve(m->J, r, m->piv, m->da);

@@ -29,6 +29,7 @@ gal_rom *gal_rom_free(gal_rom *m)
     if (!m) return NULL;
     free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
     gal_csc_free(m->K0); gal_csc_free(m->K);
+    gal_chol_free(m->chol0);
     free(m->x); free(m->v); free(m->a); free(m->fi); free(m->fe);
     free(m->q); free(m->vq); free(m->gq); free(m->fq); free(m->wn); free(m->wn2);
     free(m->x1); free(m->v1); free(m->a1); free(m->fi1); free(m->fe1); free(m->res); free(m->da);
@@ -71,14 +72,9 @@ static int derivatives(gal_rom *m, double *MV, int nsel)
     const gal_rod *rod = m->rod;
     int n = m->ndof, nq = m->nq, st = GAL_OK;
     gal_csc *Kp = gal_csc_clone(rod->K), *Km = gal_csc_clone(rod->K);
-    gal_chol *ch = gal_chol_alloc(rod->K);
+    gal_chol *ch = m->chol0;
     double *w = malloc((size_t)4 * n * sizeof(double)), *qp = malloc((size_t)nq * sizeof(double));
-    if (!Kp || !Km || !ch || !w || !qp) { st = gal_error(GAL_ENOMEM, "reduced model: out of memory"); goto done; }
-    if ((st = gal_chol_factor(ch, m->K0, 0, NULL))) {
-        st = gal_error(GAL_EFAIL, "reduced model: the tangent at the equilibrium is not positive definite (%s)",
-                       gal_error_message());
-        goto done;
-    }
+    if (!Kp || !Km || !w || !qp) { st = gal_error(GAL_ENOMEM, "reduced model: out of memory"); goto done; }
     for (int j = 0; j < nsel && !st; j++) {
         const double *pj = m->V + (size_t)j * n;
         double mx = 0;
@@ -99,7 +95,7 @@ static int derivatives(gal_rom *m, double *MV, int nsel)
         }
     }
 done:
-    gal_csc_free(Kp); gal_csc_free(Km); gal_chol_free(ch);
+    gal_csc_free(Kp); gal_csc_free(Km);
     free(w); free(qp);
     return st;
 }
@@ -153,6 +149,11 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     if (!MV || !c || !m->omega2 || alloc_state(m, rmax)) goto fail;
     memcpy(m->q_eq, q_eq, (size_t)m->nq * sizeof(double));
     if (gal_rod_eval(rod, q_eq, NULL, m->gq, m->K0)) goto fail;
+    if (!(m->chol0 = gal_chol_alloc(rod->K))) goto fail;
+    if (gal_chol_factor(m->chol0, m->K0, 0, NULL)) {
+        gal_error(GAL_EFAIL, "reduced model: the tangent at the equilibrium is not positive definite (%s)", gal_error_message());
+        goto fail;
+    }
     for (int k = 0; k < nsel; k++) {
         if (sel[k] < 0 || sel[k] >= md->n) { gal_error(GAL_EINPUT, "reduced model: mode %d not computed", sel[k]); goto fail; }
         m->omega2[k] = md->mode[sel[k]].omega * md->mode[sel[k]].omega;

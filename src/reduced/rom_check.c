@@ -1,10 +1,10 @@
 /* rom_check.c: the reduced model's self-check (rom.h): the full equations' residual
  *   R = M a + C v + grad U(q) - F(t, q, v)
- * at the reconstructed state, split into the families of the motion (vertical: in the plane of
- * the span, normal to the conductor at equilibrium; horizontal: out of that plane; axial: along
- * it; torsional: the twist), each measured in the mass-weighted norm |y|^2 = sum y_d^2 / m_d and
- * set against the same norm of the terms of its own family (so that the axial forces, large and
- * balanced, do not swamp the transverse ones). */
+ * at the reconstructed state, turned into the displacement that would correct it, du = K0^-1 R,
+ * and split into the families of the motion (vertical: in the plane of the span, normal to the
+ * conductor at equilibrium; horizontal: out of that plane; axial: along it; torsional: the twist),
+ * each in the mass norm |u|^2 = sum m_d u_d^2 and set against the family's own displacement (so
+ * that the axial forces, large and balanced, do not swamp the transverse ones). */
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
 
@@ -12,11 +12,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/chol.h"
 #include "gallop/base/vec3.h"
 
 enum { TERM_R, TERM_MA, TERM_CV, TERM_G, TERM_F, NTERM };
 
-/* Accumulate sum y^2/m per family of the free-dof vector y into acc[family]. */
+/* Accumulate sum m y^2 per family of the free-dof displacement y into acc[family]. */
 static void accumulate(const gal_rom *m, const double *y, const double *mdiag, double *acc)
 {
     const gal_rod *rod = m->rod;
@@ -36,7 +37,7 @@ static void accumulate(const gal_rom *m, const double *y, const double *mdiag, d
         for (int k = 0; k < 3; k++) ey[k] /= ly;
         gal_cross3(t, ey, nv);
         double yv = gal_dot3(nv, y + d0), yh = gal_dot3(ey, y + d0), ya = gal_dot3(t, y + d0);
-        double w = 1.0 / mdiag[d0];
+        double w = mdiag[d0];
         acc[GAL_FAMILY_VERTICAL] += yv * yv * w;
         acc[GAL_FAMILY_HORIZONTAL] += yh * yh * w;
         acc[GAL_FAMILY_AXIAL] += ya * ya * w;
@@ -44,7 +45,7 @@ static void accumulate(const gal_rom *m, const double *y, const double *mdiag, d
     if (rod->p.torsion)
         for (int j = 0; j < rod->p.elements; j++) {
             int d = rod->dof[3 * nn + j];
-            if (d >= 0) acc[GAL_FAMILY_TORSIONAL] += y[d] * y[d] / mdiag[d];
+            if (d >= 0) acc[GAL_FAMILY_TORSIONAL] += y[d] * y[d] * mdiag[d];
         }
 }
 
@@ -74,21 +75,20 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
     gal_rod_gather(rod, m->gq, y[TERM_G]);
     gal_rod_gather(rod, m->fq, y[TERM_F]);
     for (int d = 0; d < n; d++) y[TERM_R][d] = y[TERM_MA][d] + y[TERM_CV][d] + y[TERM_G][d] - y[TERM_F][d];
-    double acc[NTERM][GAL_FAMILY_COUNT];
-    memset(acc, 0, sizeof acc);
-    for (int k = 0; k < NTERM; k++) accumulate(m, y[k], rod->mdiag, acc[k]);
-    /* floors: 1% of the weight of the span (translations) and of its angular counterpart g / rho_g
-     * with rho_g the section's radius of gyration (twist), in the same norm */
-    double mt = 0, it = 0;
+    /* du = K0^-1 R and the displacement u = V x */
+    if ((st = gal_chol_solve(m->chol0, y[TERM_R], y[TERM_R]))) goto done;
     for (int d = 0; d < n; d++) {
-        if (rod->free_q[d] < 3 * rod->nn) mt += rod->mdiag[d] / 3;
-        else it += rod->mdiag[d];
+        double s = 0;
+        for (int k = 0; k < r; k++) s += m->V[(size_t)k * n + d] * m->x[k];
+        y[TERM_MA][d] = s;
     }
-    double g = 9.81, rg = rod->p.mass > 0 && rod->p.polar_inertia > 0 ? sqrt(rod->p.polar_inertia / rod->p.mass) : 1;
+    double acc[2][GAL_FAMILY_COUNT] = {{0}}, total = 0;
+    accumulate(m, y[TERM_R], rod->mdiag, acc[0]);
+    accumulate(m, y[TERM_MA], rod->mdiag, acc[1]);
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) total += acc[1][f];
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) {
-        double scale = 1e-2 * (f == GAL_FAMILY_TORSIONAL ? sqrt(it) * g / rg : sqrt(mt) * g);
-        for (int k = TERM_MA; k < NTERM; k++) scale += sqrt(acc[k][f]);
-        chk->rel[f] = scale > 0 ? sqrt(acc[TERM_R][f]) / scale : 0;
+        double scale = fmax(sqrt(acc[1][f]), 0.02 * sqrt(total));
+        chk->rel[f] = scale > 0 ? sqrt(acc[0][f]) / scale : 0;
         chk->max = fmax(chk->max, chk->rel[f]);
     }
 done:

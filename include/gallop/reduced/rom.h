@@ -10,7 +10,7 @@
  * fitted range. The modal-derivative directions are stiff (axial): integrated implicitly by the
  * generalized-alpha method with Newton on the reduced tangent V^T K(q) V. The model checks itself:
  * gal_rom_residual rebuilds the full state and evaluates the full equations' residual
- * M a + C v + grad U - F per family in a mass-weighted norm.
+ * M a + C v + grad U - F per family in a mass-weighted norm (gal_rom_check).
  * Present limit: grad U and F are evaluated on every element (gal_rod_eval has no subset yet), so
  * the cost of a step grows with the mesh; hyper-reduction (ECSW) plugs in at rom_internal(). */
 #ifndef GALLOP_ROM_H
@@ -34,7 +34,10 @@ typedef struct gal_rom_opts {
 } gal_rom_opts;
 
 /* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'
- * residual at a reconstructed state, relative to the size of the terms of the same family. */
+ * residual R at a reconstructed state turned into the displacement that would correct it,
+ * du = K0^-1 R, measured in the mass norm (|u|^2 = sum m_d u_d^2, the same unit for twist and
+ * translation) and set against the family's own displacement from the equilibrium (at least 2% of
+ * the whole motion's): a relative amplitude error. */
 typedef struct gal_rom_check {
     double rel[GAL_FAMILY_COUNT];
     double max;             /* the largest of rel */
@@ -52,6 +55,7 @@ typedef struct gal_rom {
     double *K0r;            /* r x r: V^T K0 V */
     double *q_eq;           /* nq: the equilibrium */
     gal_csc *K0;            /* the tangent at the equilibrium (the damping's) */
+    void *chol0;            /* its factorization (gal_chol): modal derivatives and the check */
     gal_force force;
     double am, af, beta, gamma;
     double fscale, ffloor;  /* reduced force scales of the Newton test: the weight of the nodes
