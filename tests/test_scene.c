@@ -1,4 +1,4 @@
-/* test_scene.c: scene files (src/scene/scene.c): defaults, conductor table, units, --set, one test per
+/* test_scene.c: scene files (src/scene/): defaults, conductor table, units, --set, one test per
  * class of error (status, file, line and key in the message), print/load round trip, junk input. */
 #include "check.h"
 #include "gallop.h"

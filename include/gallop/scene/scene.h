@@ -113,7 +113,7 @@ extern const char *const gal_effect_names[GAL_FX_COUNT];
  * row. An [ice] aero_table is read and checked here (gal_aero_table_read), whatever the command, so
  * that a bad table is refused as bad input before anything is computed or written. Returns GAL_OK, or GAL_EINPUT / GAL_EIO (unreadable file) with a message
  * "FILE:LINE: [section] key = value: what is wrong; allowed: range" ("--set: ..." for overrides,
- * "FILE: ..." for a missing key). The ranges are listed in src/scene/scene.c (table `keys`). */
+ * "FILE: ..." for a missing key). The ranges are listed in src/scene/keys.c (table `scn_keys`). */
 int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides, int n,
                    const char *conductors_csv);
 
