@@ -39,13 +39,8 @@ static const char *printable(const char *s, char *out, size_t n)
     return out;
 }
 
-void gal_scene_print(const gal_scene *sc, FILE *fp)
+static void print_span_conductor_ice(const gal_scene *sc, FILE *fp)
 {
-    char b[GAL_PATH_MAX], nb[40];
-    fprintf(fp, "# gallop scene \"%s\", resolved from %s\n", printable(sc->name, b, 256),
-            printable(sc->path, b + 256, sizeof b - 256));
-    fprintf(fp, "# every key with its value in use; units in the comments (SI, angles in deg)\n");
-
     fprintf(fp, "\n[span]\n");
     put_key(fp, sc, K_LENGTH);
     put_key(fp, sc, K_HDIFF);
@@ -73,15 +68,13 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
     } else {
         fprintf(fp, "; no ice\n");
     }
+}
 
+static void print_wind_effects(const gal_scene *sc, FILE *fp)
+{
     fprintf(fp, "\n[wind]\n");
     put_key(fp, sc, K_SPEED);
-    /* degrees that read back to the same radians */
-    for (int p = 15; p <= 17; p++) {
-        snprintf(nb, sizeof nb, "%.*g", p, sc->wind.yaw / DEG);
-        if (strtod(nb, NULL) * DEG == sc->wind.yaw) break;
-    }
-    fprintf(fp, "yaw = %s ; %s\n", nb, scn_keys[K_YAW].unit);
+    put_key(fp, sc, K_YAW); /* degrees that read back to the same radians */
     put_key(fp, sc, K_RHO);
     int t = sc->wind.turbulence;
     fprintf(fp, "turbulence = %s ; %s\n", scn_turb_names[t >= 0 && t <= 3 ? t : 0], scn_keys[K_TURB].unit);
@@ -92,7 +85,11 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
     fprintf(fp, "\n[effects]\n");
     for (int i = 0; i < GAL_FX_COUNT; i++)
         fprintf(fp, "%s = %s\n", gal_effect_names[i], sc->effect[i] ? "on" : "off");
+}
 
+static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
+{
+    char nb[40];
     fprintf(fp, "\n[model]\n");
     fprintf(fp, "elements = %d ; count\n", sc->model.elements);
     fprintf(fp, "modes_vertical = %d ; count\n", sc->model.modes_vertical);
@@ -118,4 +115,15 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
     fprintf(fp, "\n[output]\n");
     fprintf(fp, "; path\n");
     fprintf(fp, "directory = %s\n", sc->output.directory);
+}
+
+void gal_scene_print(const gal_scene *sc, FILE *fp)
+{
+    char b[GAL_PATH_MAX];
+    fprintf(fp, "# gallop scene \"%s\", resolved from %s\n", printable(sc->name, b, 256),
+            printable(sc->path, b + 256, sizeof b - 256));
+    fprintf(fp, "# every key with its value in use; units in the comments (SI, angles in deg)\n");
+    print_span_conductor_ice(sc, fp);
+    print_wind_effects(sc, fp);
+    print_model_simulation_output(sc, fp);
 }

@@ -222,6 +222,62 @@ static int apply_override(pstate *ps, const char *o)
     return scn_apply(ps, k, val, -1);
 }
 
+/* sc->name: the file name without directory and .ini; ps->dir: the rest. */
+static void name_and_dir(gal_scene *sc, pstate *ps, const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    size_t bl = strlen(base);
+    if (bl > 4 && !strcmp(base + bl - 4, ".ini")) bl -= 4;
+    if (bl >= sizeof sc->name) bl = sizeof sc->name - 1;
+    memcpy(sc->name, base, bl);
+    sc->name[bl] = '\0';
+    if (!slash) strcpy(ps->dir, ".");
+    else if (slash == path) strcpy(ps->dir, "/");
+    else snprintf(ps->dir, sizeof ps->dir, "%.*s", (int)(slash - path), path);
+}
+
+/* inih's own complaint about line r: neither [section], key = value nor a comment. */
+static void malformed_line(pstate *ps, int r)
+{
+    const char *buf = ps->buf, *s = buf;
+    for (int i = 1; i < r && s; i++) {
+        s = memchr(s, '\n', ps->len - (size_t)(s - buf));
+        if (s) s++;
+    }
+    char text[128] = "";
+    if (s) {
+        size_t m = strcspn(s, "\n");
+        char tmp[128];
+        if (m >= sizeof tmp) m = sizeof tmp - 1;
+        memcpy(tmp, s, m);
+        tmp[m] = '\0';
+        scn_show(tmp, text, sizeof text);
+    }
+    ps->status = 0;
+    scn_fail(ps, GAL_EINPUT, r, "\"%s\": malformed line; allowed: [section], key = value, or a "
+             "comment starting with ; or #", text);
+}
+
+/* The file in ps->buf, then the overrides, then the checks after all keys. */
+static void parse(pstate *ps, const char *const *overrides, int n, const char *conductors_csv)
+{
+    /* keys that a --set replaces; a --set of one of tension / sag / unstretched length replaces
+     * the file's choice of specification */
+    for (int i = 0; overrides && i < n; i++) {
+        int k = overrides[i] ? override_key(overrides[i]) : -1;
+        if (k < 0) continue;
+        ps->over[k] = 1;
+        if (scn_is_spec(k)) ps->over[K_TENSION] = ps->over[K_SAG] = ps->over[K_ULENGTH] = 1;
+    }
+    int r = ini_parse_stream(reader, ps, handler, ps);
+    if (r == -2) scn_fail(ps, GAL_ENOMEM, 0, "out of memory");
+    else if (r > 0 && (!ps->status || r < ps->err_line)) malformed_line(ps, r);
+    for (int i = 0; !ps->status && overrides && i < n; i++)
+        if (overrides[i]) apply_override(ps, overrides[i]);
+    if (!ps->status) scn_finish(ps, conductors_csv);
+}
+
 int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides, int n,
                    const char *conductors_csv)
 {
@@ -236,18 +292,7 @@ int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides
     ps->file = path;
     for (int i = 0; i < GAL_FX_COUNT; i++) ps->fx[i] = -1;
     strcpy(sc->path, path);
-
-    /* name: the file name without directory and .ini; dir: the rest */
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    size_t bl = strlen(base);
-    if (bl > 4 && !strcmp(base + bl - 4, ".ini")) bl -= 4;
-    if (bl >= sizeof sc->name) bl = sizeof sc->name - 1;
-    memcpy(sc->name, base, bl);
-    sc->name[bl] = '\0';
-    if (!slash) strcpy(ps->dir, ".");
-    else if (slash == path) strcpy(ps->dir, "/");
-    else snprintf(ps->dir, sizeof ps->dir, "%.*s", (int)(slash - path), path);
+    name_and_dir(sc, ps, path);
 
     int st = GAL_OK;
     size_t len = 0;
@@ -262,39 +307,7 @@ int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides
     }
     ps->buf = buf;
     ps->len = len;
-    /* keys that a --set replaces; a --set of one of tension / sag / unstretched length replaces
-     * the file's choice of specification */
-    for (int i = 0; overrides && i < n; i++) {
-        int k = overrides[i] ? override_key(overrides[i]) : -1;
-        if (k < 0) continue;
-        ps->over[k] = 1;
-        if (scn_is_spec(k)) ps->over[K_TENSION] = ps->over[K_SAG] = ps->over[K_ULENGTH] = 1;
-    }
-    int r = ini_parse_stream(reader, ps, handler, ps);
-    if (r == -2) scn_fail(ps, GAL_ENOMEM, 0, "out of memory");
-    else if (r > 0 && (!ps->status || r < ps->err_line)) {
-        /* inih's own complaint: a line that is neither [section], key = value nor a comment */
-        const char *s = buf;
-        for (int i = 1; i < r && s; i++) {
-            s = memchr(s, '\n', len - (size_t)(s - buf));
-            if (s) s++;
-        }
-        char text[128] = "";
-        if (s) {
-            size_t m = strcspn(s, "\n");
-            char tmp[128];
-            if (m >= sizeof tmp) m = sizeof tmp - 1;
-            memcpy(tmp, s, m);
-            tmp[m] = '\0';
-            scn_show(tmp, text, sizeof text);
-        }
-        ps->status = 0;
-        scn_fail(ps, GAL_EINPUT, r, "\"%s\": malformed line; allowed: [section], key = value, or a "
-             "comment starting with ; or #", text);
-    }
-    for (int i = 0; !ps->status && overrides && i < n; i++)
-        if (overrides[i]) apply_override(ps, overrides[i]);
-    if (!ps->status) scn_finish(ps, conductors_csv);
+    parse(ps, overrides, n, conductors_csv);
     if (ps->status) st = gal_error(ps->status, "%s", ps->msg);
     free(buf);
     free(ps);

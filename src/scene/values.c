@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,159 +102,194 @@ char *scn_trim(char *s)
 
 /* ---- one key = value: convert, check, store ---- */
 
+/* A value being applied: the key, the text, where it was given (file line, or -1 for --set). */
+typedef struct {
+    pstate *ps;
+    int k, line;
+    const char *v;
+    char sv[128]; /* the value as shown in messages */
+} kv;
+
+/* "[section] key = value: " then the message; returns 0 (scn_fail). */
+static int bad(kv *a, int status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+static int bad(kv *a, int status, const char *fmt, ...)
+{
+    char what[2048];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return scn_fail(a->ps, status, a->line, "[%s] %s = %s: %s", scn_keys[a->k].sec,
+                    scn_key_name(a->k), a->sv, what);
+}
+
+static int apply_num(kv *a)
+{
+    const keydef *kd = &scn_keys[a->k];
+    char rt[160];
+    double x;
+    if (!scn_parse_num(a->v, &x))
+        return bad(a, GAL_EINPUT, "not a number; allowed: %s", scn_range_text(a->k, rt, sizeof rt));
+    if (!scn_in_range(kd, x))
+        return bad(a, GAL_EINPUT, "out of range; allowed: %s", scn_range_text(a->k, rt, sizeof rt));
+    *(double *)((char *)a->ps->sc + kd->off) = x * kd->scale;
+    return 1;
+}
+
+static int apply_int(kv *a)
+{
+    const keydef *kd = &scn_keys[a->k];
+    char rt[160];
+    long x;
+    if (!parse_long(a->v, &x))
+        return bad(a, GAL_EINPUT, "not an integer; allowed: %s", scn_range_text(a->k, rt, sizeof rt));
+    if (!scn_in_range(kd, (double)x))
+        return bad(a, GAL_EINPUT, "out of range; allowed: %s", scn_range_text(a->k, rt, sizeof rt));
+    if (kd->type == T_INT) *(int *)((char *)a->ps->sc + kd->off) = (int)x;
+    else a->ps->sc->wind.seed = x;
+    return 1;
+}
+
+static int apply_enum(kv *a)
+{
+    const keydef *kd = &scn_keys[a->k];
+    gal_scene *sc = a->ps->sc;
+    int i = 0;
+    while (kd->names[i] && strcasecmp(a->v, kd->names[i])) i++;
+    if (!kd->names[i]) return bad(a, GAL_EINPUT, "unknown value; allowed: %s", kd->unit);
+    if (a->k == K_TWIST) sc->span.end_twist = i ? GAL_TWIST_FREE : GAL_TWIST_CLAMPED;
+    else if (a->k == K_START) sc->simulation.start_mean_wind = i;
+    else
+        sc->wind.turbulence = i == 1 ? GAL_TURB_KAIMAL
+                              : i == 2 ? GAL_TURB_DAVENPORT
+                              : i == 3 ? GAL_TURB_VON_KARMAN
+                                       : GAL_TURB_NONE;
+    return 1;
+}
+
+/* conductor.name (T_NAME) and output.directory (T_DIR): text kept as given */
+static int apply_text(kv *a)
+{
+    gal_scene *sc = a->ps->sc;
+    const char *v = a->v;
+    if (scn_keys[a->k].type == T_NAME) {
+        if (!scn_text_ok(v) || strchr(v, ',') || strlen(v) >= sizeof sc->conductor.name)
+            return bad(a, GAL_EINPUT, "not a conductor name; allowed: 1 to %zu printable "
+                       "characters without ',' or ';'", sizeof sc->conductor.name - 1);
+        strcpy(sc->conductor.name, v);
+        return 1;
+    }
+    if (!scn_text_ok(v) || strlen(v) >= sizeof sc->output.directory)
+        return bad(a, GAL_EINPUT, "not a usable path; allowed: 1 to %d printable characters "
+                   "without ';'", GAL_PATH_MAX - 1);
+    strcpy(sc->output.directory, v);
+    return 1;
+}
+
+/* ice.aero_table: relative to the scene's directory (file) or to the current directory (--set),
+ * resolved, a readable regular file */
+static int apply_path(kv *a)
+{
+    gal_scene *sc = a->ps->sc;
+    const char *v = a->v;
+    char joined[2 * GAL_PATH_MAX + 2], real[PATH_MAX], rt[160];
+    if (!scn_text_ok(v) || strlen(v) >= GAL_PATH_MAX)
+        return bad(a, GAL_EINPUT, "not a usable path; allowed: 1 to %d printable characters "
+                   "without ';'", GAL_PATH_MAX - 1);
+    if (v[0] == '/' || a->line < 0) snprintf(joined, sizeof joined, "%s", v);
+    else snprintf(joined, sizeof joined, "%s/%s", a->ps->dir, v);
+    if (access(joined, R_OK) != 0 || !realpath(joined, real))
+        return bad(a, GAL_EINPUT, "cannot read %s: %s; allowed: a readable CSV file (a relative "
+                   "path is taken from the scene's directory)",
+                   scn_show(joined, rt, sizeof rt), strerror(errno));
+    if (!scn_text_ok(real) || strlen(real) >= sizeof sc->ice.aero_table)
+        return bad(a, GAL_EINPUT, "resolved path too long or unprintable; allowed: at most %d "
+                   "printable characters", GAL_PATH_MAX - 1);
+    struct stat fst;
+    if (stat(real, &fst) != 0 || !S_ISREG(fst.st_mode))
+        return bad(a, GAL_EINPUT, "%s is not a regular file; allowed: a readable CSV file",
+                   scn_show(real, rt, sizeof rt));
+    /* read it now, whatever the command: a bad table is bad input before any output */
+    gal_aero_table *tab = NULL;
+    int tst = gal_aero_table_read(real, &tab);
+    gal_aero_table_free(tab);
+    if (tst != GAL_OK)
+        return bad(a, tst == GAL_ENOMEM ? GAL_ENOMEM : GAL_EINPUT,
+                   "%s; allowed: a CSV table '# source: ...', 'alpha_deg,cd,cl,cm', rows of 4 "
+                   "finite numbers, angles increasing over one period", gal_error_message());
+    strcpy(sc->ice.aero_table, real);
+    return 1;
+}
+
+static int apply_fx(kv *a)
+{
+    static const char *const on[] = {"on", "true", "yes", "1"};
+    static const char *const off[] = {"off", "false", "no", "0"};
+    int val = -1;
+    for (int i = 0; i < 4; i++) {
+        if (!strcasecmp(a->v, on[i])) val = 1;
+        if (!strcasecmp(a->v, off[i])) val = 0;
+    }
+    if (val < 0)
+        return bad(a, GAL_EINPUT, "not on or off; allowed: on, off (or true/false, yes/no, 1/0)");
+    a->ps->fx[scn_keys[a->k].off] = val;
+    return 1;
+}
+
+/* "0.25, 0.5": 1 to GAL_MAX_PROBES fractions of the span */
+static int apply_probes(kv *a)
+{
+    double p[GAL_MAX_PROBES];
+    int np = 0;
+    const char *s = a->v;
+    char al[128];
+    snprintf(al, sizeof al, "a comma list of 1 to %d fractions of the span, each 0 < p < 1",
+             GAL_MAX_PROBES);
+    for (;;) {
+        const char *c = strchr(s, ',');
+        size_t n = c ? (size_t)(c - s) : strlen(s);
+        char item[64];
+        while (n && (*s == ' ' || *s == '\t')) s++, n--;
+        while (n && (s[n - 1] == ' ' || s[n - 1] == '\t')) n--;
+        if (np == GAL_MAX_PROBES) return bad(a, GAL_EINPUT, "too many probes; allowed: %s", al);
+        if (n == 0 || n >= sizeof item)
+            return bad(a, GAL_EINPUT, "empty or bad item; allowed: %s", al);
+        memcpy(item, s, n);
+        item[n] = '\0';
+        if (!scn_parse_num(item, &p[np]))
+            return bad(a, GAL_EINPUT, "'%s' is not a number; allowed: %s", item, al);
+        if (!(p[np] > 0 && p[np] < 1))
+            return bad(a, GAL_EINPUT, "%s is out of range; allowed: %s", item, al);
+        np++;
+        if (!c) break;
+        s = c + 1;
+    }
+    memcpy(a->ps->sc->simulation.probes, p, sizeof p[0] * (size_t)np);
+    a->ps->sc->simulation.nprobes = np;
+    return 1;
+}
+
 int scn_apply(pstate *ps, int k, const char *v, int line)
 {
-    gal_scene *sc = ps->sc;
-    const keydef *kd = &scn_keys[k];
-    const char *kn = scn_key_name(k);
-    char sv[128], rt[160];
-    scn_show(v, sv, sizeof sv);
-
-    switch (kd->type) {
-    case T_NUM: {
-        double x;
-        if (!scn_parse_num(v, &x))
-            return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: not a number; allowed: %s", kd->sec,
-                        kn, sv, scn_range_text(k, rt, sizeof rt));
-        if (!scn_in_range(kd, x))
-            return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: out of range; allowed: %s", kd->sec,
-                        kn, sv, scn_range_text(k, rt, sizeof rt));
-        *(double *)((char *)sc + kd->off) = x * kd->scale;
-        break;
-    }
+    kv a = {.ps = ps, .k = k, .line = line, .v = v};
+    scn_show(v, a.sv, sizeof a.sv);
+    int ok = 0;
+    switch (scn_keys[k].type) {
+    case T_NUM: ok = apply_num(&a); break;
     case T_INT:
-    case T_LONG: {
-        long x;
-        if (!parse_long(v, &x))
-            return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: not an integer; allowed: %s",
-                        kd->sec, kn, sv, scn_range_text(k, rt, sizeof rt));
-        if (!scn_in_range(kd, (double)x))
-            return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: out of range; allowed: %s", kd->sec,
-                        kn, sv, scn_range_text(k, rt, sizeof rt));
-        if (kd->type == T_INT) *(int *)((char *)sc + kd->off) = (int)x;
-        else sc->wind.seed = x;
-        break;
-    }
-    case T_ENUM: {
-        int i = 0;
-        while (kd->names[i] && strcasecmp(v, kd->names[i])) i++;
-        if (!kd->names[i])
-            return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: unknown value; allowed: %s", kd->sec,
-                        kn, sv, kd->unit);
-        if (k == K_TWIST) sc->span.end_twist = i ? GAL_TWIST_FREE : GAL_TWIST_CLAMPED;
-        else if (k == K_START) sc->simulation.start_mean_wind = i;
-        else
-            sc->wind.turbulence = i == 1 ? GAL_TURB_KAIMAL
-                                  : i == 2 ? GAL_TURB_DAVENPORT
-                                  : i == 3 ? GAL_TURB_VON_KARMAN
-                                           : GAL_TURB_NONE;
-        break;
-    }
+    case T_LONG: ok = apply_int(&a); break;
+    case T_ENUM: ok = apply_enum(&a); break;
     case T_NAME:
-        if (!scn_text_ok(v) || strchr(v, ',') || strlen(v) >= sizeof sc->conductor.name)
-            return scn_fail(ps, GAL_EINPUT, line,
-                        "[%s] %s = %s: not a conductor name; allowed: 1 to %zu printable "
-                        "characters without ',' or ';'",
-                        kd->sec, kn, sv, sizeof sc->conductor.name - 1);
-        strcpy(sc->conductor.name, v);
-        break;
-    case T_DIR:
-        if (!scn_text_ok(v) || strlen(v) >= sizeof sc->output.directory)
-            return scn_fail(ps, GAL_EINPUT, line,
-                        "[%s] %s = %s: not a usable path; allowed: 1 to %d printable characters "
-                        "without ';'",
-                        kd->sec, kn, sv, GAL_PATH_MAX - 1);
-        strcpy(sc->output.directory, v);
-        break;
-    case T_PATH: {
-        /* relative to the scene's directory (file) or to the current directory (--set) */
-        char joined[2 * GAL_PATH_MAX + 2], real[PATH_MAX];
-        if (!scn_text_ok(v) || strlen(v) >= GAL_PATH_MAX)
-            return scn_fail(ps, GAL_EINPUT, line,
-                        "[%s] %s = %s: not a usable path; allowed: 1 to %d printable characters "
-                        "without ';'",
-                        kd->sec, kn, sv, GAL_PATH_MAX - 1);
-        if (v[0] == '/' || line < 0) snprintf(joined, sizeof joined, "%s", v);
-        else snprintf(joined, sizeof joined, "%s/%s", ps->dir, v);
-        if (access(joined, R_OK) != 0 || !realpath(joined, real))
-            return scn_fail(ps, GAL_EINPUT, line,
-                        "[%s] %s = %s: cannot read %s: %s; allowed: a readable CSV file (a "
-                        "relative path is taken from the scene's directory)",
-                        kd->sec, kn, sv, scn_show(joined, rt, sizeof rt), strerror(errno));
-        if (!scn_text_ok(real) || strlen(real) >= sizeof sc->ice.aero_table)
-            return scn_fail(ps, GAL_EINPUT, line,
-                        "[%s] %s = %s: resolved path too long or unprintable; allowed: at most "
-                        "%d printable characters",
-                        kd->sec, kn, sv, GAL_PATH_MAX - 1);
-        struct stat fst;
-        if (stat(real, &fst) != 0 || !S_ISREG(fst.st_mode))
-            return scn_fail(ps, GAL_EINPUT, line,
-                        "[%s] %s = %s: %s is not a regular file; allowed: a readable CSV file",
-                        kd->sec, kn, sv, scn_show(real, rt, sizeof rt));
-        /* read it now, whatever the command: a bad table is bad input before any output */
-        gal_aero_table *tab = NULL;
-        int tst = gal_aero_table_read(real, &tab);
-        gal_aero_table_free(tab);
-        if (tst != GAL_OK)
-            return scn_fail(ps, tst == GAL_ENOMEM ? GAL_ENOMEM : GAL_EINPUT, line,
-                        "[%s] %s = %s: %s; allowed: a CSV table '# source: ...', "
-                        "'alpha_deg,cd,cl,cm', rows of 4 finite numbers, angles increasing over "
-                        "one period",
-                        kd->sec, kn, sv, gal_error_message());
-        strcpy(sc->ice.aero_table, real);
-        break;
+    case T_DIR: ok = apply_text(&a); break;
+    case T_PATH: ok = apply_path(&a); break;
+    case T_FX: ok = apply_fx(&a); break;
+    case T_PROBES: ok = apply_probes(&a); break;
     }
-    case T_FX: {
-        static const char *const on[] = {"on", "true", "yes", "1"};
-        static const char *const off[] = {"off", "false", "no", "0"};
-        int val = -1;
-        for (int i = 0; i < 4; i++) {
-            if (!strcasecmp(v, on[i])) val = 1;
-            if (!strcasecmp(v, off[i])) val = 0;
-        }
-        if (val < 0)
-            return scn_fail(ps, GAL_EINPUT, line,
-                        "[%s] %s = %s: not on or off; allowed: on, off (or true/false, yes/no, 1/0)",
-                        kd->sec, kn, sv);
-        ps->fx[kd->off] = val;
-        break;
-    }
-    case T_PROBES: {
-        double p[GAL_MAX_PROBES];
-        int np = 0;
-        const char *s = v;
-        const char *allowed = "a comma list of 1 to %d fractions of the span, each 0 < p < 1";
-        char al[128];
-        snprintf(al, sizeof al, allowed, GAL_MAX_PROBES);
-        for (;;) {
-            const char *c = strchr(s, ',');
-            size_t n = c ? (size_t)(c - s) : strlen(s);
-            char item[64];
-            while (n && (*s == ' ' || *s == '\t')) s++, n--;
-            while (n && (s[n - 1] == ' ' || s[n - 1] == '\t')) n--;
-            if (np == GAL_MAX_PROBES)
-                return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: too many probes; allowed: %s",
-                            kd->sec, kn, sv, al);
-            if (n == 0 || n >= sizeof item)
-                return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: empty or bad item; allowed: %s",
-                            kd->sec, kn, sv, al);
-            memcpy(item, s, n);
-            item[n] = '\0';
-            if (!scn_parse_num(item, &p[np]))
-                return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: '%s' is not a number; allowed: %s",
-                            kd->sec, kn, sv, item, al);
-            if (!(p[np] > 0 && p[np] < 1))
-                return scn_fail(ps, GAL_EINPUT, line, "[%s] %s = %s: %s is out of range; allowed: %s",
-                            kd->sec, kn, sv, item, al);
-            np++;
-            if (!c) break;
-            s = c + 1;
-        }
-        memcpy(sc->simulation.probes, p, sizeof p[0] * (size_t)np);
-        sc->simulation.nprobes = np;
-        break;
-    }
-    }
+    if (!ok) return 0;
     ps->given[k] = line;
     snprintf(ps->raw[k], VALMAX, "%s", v);
     return 1;
