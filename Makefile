@@ -47,6 +47,7 @@ $(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*/*.h src/*/*.h)
 	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) -MMD -c $< -o $@
 
 $(BUILD)/libgallop.a: $(LIB_OBJ)
+	@rm -f $@ # a fresh archive: no member left over from a source moved or removed
 	ar rcs $@ $^
 
 $(BUILD)/gallop: $(CLI_OBJ) $(BUILD)/libgallop.a
