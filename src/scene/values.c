@@ -2,7 +2,6 @@
  * probe lists), range-checked against the key table, stored in SI units. */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "scene_impl.h"
-#include "gallop/loads/aero.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -213,15 +212,10 @@ static int apply_path(kv *a)
     if (stat(real, &fst) != 0 || !S_ISREG(fst.st_mode))
         return bad(a, GAL_EINPUT, "%s is not a regular file; allowed: a readable CSV file",
                    scn_show(real, rt, sizeof rt));
-    /* read it now, whatever the command: a bad table is bad input before any output */
-    gal_aero_table *tab = NULL;
-    int tst = gal_aero_table_read(real, &tab);
-    gal_aero_table_free(tab);
-    if (tst != GAL_OK)
-        return bad(a, tst == GAL_ENOMEM ? GAL_ENOMEM : GAL_EINPUT,
-                   "%s; allowed: a CSV table '# source: ...', 'alpha_deg,cd,cl,cm', rows of 4 "
-                   "finite numbers, angles increasing over one period", gal_error_message());
+    /* its contents are read by the model (gal_model_aero_table), which names this line */
     strcpy(sc->ice.aero_table, real);
+    sc->ice.aero_table_line = a->line;
+    snprintf(sc->ice.aero_table_given, sizeof sc->ice.aero_table_given, "%s", a->sv);
     return 1;
 }
 
