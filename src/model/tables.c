@@ -1,7 +1,7 @@
 /* tables.c: the tables of a model read from the files its scene names: the section's aerodynamic
  * coefficients ([ice] aero_table), or the built-in table of a bare conductor. */
 #include "gallop/model/tables.h"
-#include "gallop/base/core.h"
+#include "gallop/base/error.h"
 
 #include <stddef.h>
 #include <stdio.h>
