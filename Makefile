@@ -55,7 +55,7 @@ $(BUILD)/gallop: $(CLI_OBJ) $(BUILD)/libgallop.a
 
 $(BUILD)/tests/%: tests/%.c tests/check.h $(BUILD)/libgallop.a
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) $< $(BUILD)/libgallop.a $(LIBS) -o $@
+	$(CC) $(ALL_CFLAGS) -pthread $(CPPFLAGS) $< $(BUILD)/libgallop.a $(LIBS) -o $@
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d)
 

@@ -1,4 +1,4 @@
-/* error.c: error messages, exit status of a status, wall-clock time. */
+/* error.c: error messages (one per thread), exit status of a status, wall-clock time. */
 #define _POSIX_C_SOURCE 200809L
 #include "gallop/base/error.h"
 
@@ -7,7 +7,8 @@
 #include <string.h>
 #include <time.h>
 
-static char errbuf[2048];
+/* one message per thread (C11): a thread that fails reads its own message, whatever the others do */
+static _Thread_local char errbuf[2048];
 
 const char *gal_error_message(void) { return errbuf[0] ? errbuf : "unknown error"; }
 

@@ -12,9 +12,11 @@ typedef enum {
     GAL_EIO = -4      /* a file could not be read or written (exit 2 when reading input) */
 } gal_status;
 
-/* The last error message (library code sets it, main prints it). */
+/* The last error message of the calling thread (library code sets it, main prints it); "unknown
+ * error" when the thread has set none. Each thread has its own message. */
 const char *gal_error_message(void);
-/* Set the message (printf format) and return `status` so that callers can `return gal_error(...)`. */
+/* Set the calling thread's message (printf format; the arguments may include the current
+ * message) and return `status` so that callers can `return gal_error(...)`. */
 int gal_error(int status, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
