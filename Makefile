@@ -90,7 +90,8 @@ demo: $(BUILD)/gallop
 	./$(BUILD)/gallop modes $(DEMO_SCENE) -o out/demo
 
 check: $(BUILD)/gallop $(TEST_BIN)
-	@GALLOP=$(abspath $(BUILD)/gallop) bash tests/run.sh $(TEST_BIN) $(TEST_SH)
+	@GALLOP=$(abspath $(BUILD)/gallop) CC="$(CC)" GALLOP_CPPFLAGS="$(CPPFLAGS)" \
+	    bash tests/run.sh $(TEST_BIN) $(TEST_SH)
 
 # the suite's power: the mutants of tests/mutate/mutants.txt, each applied to a copy of the sources
 mutate: | $(STAMP)

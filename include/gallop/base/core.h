@@ -8,6 +8,10 @@
 
 #include "gallop/base/error.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_PI 3.14159265358979323846
 
 /* ---- output files that appear whole or not at all ----
@@ -50,5 +54,9 @@ void gal_json_arr_end(gal_json *j);
 void gal_json_kv_num(gal_json *j, const char *key, double v);
 void gal_json_kv_int(gal_json *j, const char *key, long v);
 void gal_json_kv_str(gal_json *j, const char *key, const char *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

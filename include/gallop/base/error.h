@@ -3,6 +3,10 @@
 #ifndef GALLOP_ERROR_H
 #define GALLOP_ERROR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* One status enum for the whole library: 0 success, negative failure. */
 typedef enum {
     GAL_OK = 0,
@@ -28,5 +32,9 @@ int gal_exit_code(int status);
 
 /* Wall-clock seconds from an arbitrary origin (monotonic). */
 double gal_wall_time(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

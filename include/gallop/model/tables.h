@@ -6,6 +6,10 @@
 #include "gallop/loads/aero.h"
 #include "gallop/scene/scene.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The section's aerodynamic table: the scene's [ice] aero_table when it has one, else the
  * built-in table of a bare stranded conductor (a circular cylinder at subcritical Reynolds
  * number: C_D = 1, no lift or moment). *out is set on success (free it with
@@ -14,5 +18,9 @@
  * the table reader found; allowed: ..." ("--set: ..." when a --set gave it), as the scene reader
  * words its own. */
 int gal_model_aero_table(const gal_scene *sc, gal_aero_table **out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

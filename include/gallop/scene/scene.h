@@ -5,6 +5,10 @@
 
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_PATH_MAX 1024
 #define GAL_MAX_PROBES 16
 
@@ -126,5 +130,9 @@ int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides
 
 /* Print the resolved scene as INI (every key, with its unit in a comment). */
 void gal_scene_print(const gal_scene *sc, FILE *fp);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
