@@ -14,6 +14,7 @@
 /* model: from the scene to the discretized span and its tables */
 #include "gallop/model/model.h"
 #include "gallop/model/tables.h"
+#include "gallop/model/damping.h"
 /* rod: the discrete Cosserat rod */
 #include "gallop/rod/rod.h"
 /* statics: the sagged equilibrium */
@@ -33,9 +34,10 @@
 #include "gallop/reduced/rdyn.h"
 /* run: galloping runs */
 #include "gallop/run/sim.h"
-/* analysis: spectra, stability, accuracy */
+/* analysis: spectra, stability, galloping onset, accuracy */
 #include "gallop/analysis/spectrum.h"
 #include "gallop/analysis/stability.h"
+#include "gallop/analysis/onset.h"
 #include "gallop/analysis/accuracy.h"
 /* output: reports and files */
 #include "gallop/output/report.h"
