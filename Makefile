@@ -47,6 +47,7 @@ $(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h include/gallop/*/*.h src/*/*.h)
 	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) -MMD -c $< -o $@
 
 $(BUILD)/libgallop.a: $(LIB_OBJ)
+	@rm -f $@ # a fresh archive: no member left over from a source moved or removed
 	ar rcs $@ $^
 
 $(BUILD)/gallop: $(CLI_OBJ) $(BUILD)/libgallop.a
@@ -54,7 +55,7 @@ $(BUILD)/gallop: $(CLI_OBJ) $(BUILD)/libgallop.a
 
 $(BUILD)/tests/%: tests/%.c tests/check.h $(BUILD)/libgallop.a
 	@mkdir -p $(dir $@)
-	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) $< $(BUILD)/libgallop.a $(LIBS) -o $@
+	$(CC) $(ALL_CFLAGS) -pthread $(CPPFLAGS) $< $(BUILD)/libgallop.a $(LIBS) -o $@
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d)
 
@@ -89,7 +90,8 @@ demo: $(BUILD)/gallop
 	./$(BUILD)/gallop modes $(DEMO_SCENE) -o out/demo
 
 check: $(BUILD)/gallop $(TEST_BIN)
-	@GALLOP=$(abspath $(BUILD)/gallop) bash tests/run.sh $(TEST_BIN) $(TEST_SH)
+	@GALLOP=$(abspath $(BUILD)/gallop) CC="$(CC)" GALLOP_CPPFLAGS="$(CPPFLAGS)" \
+	    bash tests/run.sh $(TEST_BIN) $(TEST_SH)
 
 # the suite's power: the mutants of tests/mutate/mutants.txt, each applied to a copy of the sources
 mutate: | $(STAMP)

@@ -1,9 +1,46 @@
 /* gallop.h: the public API of libgallop, a modal-reduction analysis library for the galloping of
- * overhead transmission conductors (Cosserat rod, paper Eqs. 1-10). */
+ * overhead transmission conductors (Cosserat rod, paper Eqs. 1-10): every public header, in the
+ * order of the pipeline (tests/test_header.sh checks that none is missing). */
 #ifndef GALLOP_H
 #define GALLOP_H
+
+/* base: status and errors, output files, vectors, sparse matrices */
+#include "gallop/base/error.h"
 #include "gallop/base/core.h"
+#include "gallop/base/vec3.h"
+#include "gallop/base/sparse.h"
+/* scene: a scene file read, checked and resolved */
+#include "gallop/scene/scene.h"
+/* model: from the scene to the discretized span and its tables */
+#include "gallop/model/model.h"
+#include "gallop/model/tables.h"
+#include "gallop/model/damping.h"
+/* rod: the discrete Cosserat rod */
+#include "gallop/rod/rod.h"
+/* statics: the sagged equilibrium */
+#include "gallop/statics/catenary.h"
+#include "gallop/statics/statics.h"
+/* modes: natural modes about the equilibrium */
+#include "gallop/modes/modes.h"
+/* loads: aerodynamic tables and section loads, wind */
 #include "gallop/loads/aero.h"
+#include "gallop/loads/loads.h"
 #include "gallop/loads/wind.h"
+#include "gallop/loads/windfield.h"
+/* full: the full model's time integration */
+#include "gallop/full/dynamics.h"
+/* reduced: the reduced (modal) model and its time integration */
+#include "gallop/reduced/reduced.h"
+#include "gallop/reduced/rdyn.h"
+/* run: galloping runs */
+#include "gallop/run/sim.h"
+/* analysis: spectra, stability, galloping onset, accuracy */
 #include "gallop/analysis/spectrum.h"
+#include "gallop/analysis/stability.h"
+#include "gallop/analysis/onset.h"
+#include "gallop/analysis/accuracy.h"
+/* output: reports and files */
+#include "gallop/output/report.h"
+#include "gallop/output/simreport.h"
+
 #endif

@@ -19,7 +19,9 @@ int gal_cli_accuracy(int argc, char **argv);
 /* ---- shared by the sub-commands (src/cli/common.c) ---- */
 struct gal_scene;
 /* argv[0] is the sub-command; then SCENE, any number of `--set section.key=value`, `-o DIR`.
- * Loads the scene (data/conductors.csv found as gal_scene_load says); *outdir (may be NULL) is
+ * Loads the scene (data/conductors.csv found as gal_scene_load says) and reads the [ice]
+ * aero_table it names (gal_model_aero_table), so that a bad table is refused by every command
+ * before anything is computed or written; *outdir (may be NULL) is
  * DIR, else the scene's output.directory (which -o also sets). Any other argument is an error.
  * Returns the exit status: 0, or 2 (or 1 when out of memory) with the message on stderr. */
 int gal_cli_load_scene(int argc, char **argv, struct gal_scene *sc, const char **outdir);

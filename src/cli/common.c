@@ -1,10 +1,11 @@
 /* cli/common.c: what the sub-commands share: reading SCENE [--set section.key=value ...] [-o DIR]
- * from the command line and loading the scene. */
+ * from the command line, loading the scene and reading the tables it names. */
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
 #include "gallop.h"
+#include "gallop/model/tables.h"
 #include "gallop/scene/scene.h"
 
 #define MAX_SETS 256
@@ -50,6 +51,12 @@ int gal_cli_load_scene_opts(int argc, char **argv, gal_scene *sc, const char **o
     }
     if (!scene) return usage_error(cmd, "no scene given", NULL);
     int st = gal_scene_load(sc, scene, sets, nsets, NULL);
+    if (st == GAL_OK && sc->ice.aero_table[0]) {
+        /* the table is read now, whatever the command: a bad one is bad input before any output */
+        gal_aero_table *t = NULL;
+        st = gal_model_aero_table(sc, &t);
+        gal_aero_table_free(t);
+    }
     if (st != GAL_OK) {
         fprintf(stderr, "gallop %s: %s\n", cmd, gal_error_message());
         return gal_exit_code(st);

@@ -4,6 +4,7 @@
 #include "gallop/base/core.h"
 #include "gallop/full/dynamics.h"
 #include "gallop/model/model.h"
+#include "gallop/model/tables.h"
 #include "gallop/reduced/rdyn.h"
 
 #include <math.h>
@@ -100,17 +101,7 @@ int gal_sim_setup_init(gal_sim_setup *s, const gal_scene *sc, int need_modes)
     L->ramp_time = sc->simulation.wind_ramp;
     L->reverse_time = sc->simulation.wind_reverse_time;
     if (L->flags && sc->wind.speed > 0) {
-        if (sc->ice.present && sc->ice.aero_table[0]) {
-            s->table = gal_aero_table_load(sc->ice.aero_table);
-            if (!s->table) return gal_error(GAL_EINPUT, "%s: [ice] aero_table: %s", sc->path, gal_error_message());
-        } else {
-            /* a bare stranded conductor: a circular cylinder at subcritical Reynolds number */
-            double a[4] = {-180, -90, 0, 90}, cd[4] = {1.0, 1.0, 1.0, 1.0}, z[4] = {0, 0, 0, 0};
-            s->table = gal_aero_table_make("bare conductor (built in)",
-                                           "circular cylinder, subcritical Reynolds number: C_D = 1.0, no lift or moment",
-                                           4, a, cd, z, z);
-            if (!s->table) return GAL_EFAIL;
-        }
+        if ((st = gal_model_aero_table(sc, &s->table))) return st; /* the scene's, or a bare conductor's */
         L->table = s->table;
     }
     if (L->table && sc->effect[GAL_FX_TURBULENCE]) {

@@ -10,6 +10,10 @@
 
 #include "gallop/scene/scene.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
     GAL_ACC_ELEMENTS,  /* model.elements: statics + modes against a fine mesh */
     GAL_ACC_MODES,     /* reduced basis size against one full-model run */
@@ -80,5 +84,9 @@ void gal_accuracy_clear(gal_acc_result *r);
 int gal_accuracy_write(const char *dir, const gal_scene *sc, const gal_acc_result *r);
 /* A table on fp. */
 void gal_accuracy_print(FILE *fp, const gal_acc_result *r);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

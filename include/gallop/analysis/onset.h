@@ -22,6 +22,10 @@
 #include "gallop/modes/modes.h"
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_ONSET_SPEED_MIN 0.5   /* m/s, defaults of [stability] speed_min, speed_max, speed_step */
 #define GAL_ONSET_SPEED_MAX 20.0
 #define GAL_ONSET_SPEED_STEP 0.25
@@ -96,5 +100,9 @@ void gal_onset_clear(gal_onset *r);
  * the generalized loads of gal_loads_full at configuration q and zero velocity. */
 int gal_onset_aero_matrices(const gal_rod *rod, const double *q, const gal_loads *L, const double *phi, int n,
                             double *Ka, double *Ca);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -11,6 +11,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ======================================================================================
  * Traces: CSV with a header line of column names, '#' comment lines and blank lines allowed.
  * The time column is the one named `time`, `t` or `time_s` (any case), else the first column.
@@ -154,5 +158,9 @@ int gal_spectrum_envelope(gal_hilbert *h, const double *x, double band, double *
  * (constant record). *level (may be NULL) receives L. */
 int gal_spectrum_steady_time(const double *env, size_t n, double dt, double tol, double *t_steady,
                              double *level);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

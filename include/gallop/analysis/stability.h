@@ -8,8 +8,16 @@
 
 #include "gallop/loads/aero.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Onset speed (m/s) for one mode at one angle; +INFINITY where H >= 0 (stable at any speed). */
 double gal_stability_onset(const gal_aero_table *t, double alpha_rad, double mass, double zeta,
                            double omega, double rho, double diam);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,35 +1,18 @@
-/* core.h: status codes, error reporting, output files and small utilities shared by every module. */
+/* core.h: what every module shares: status codes and errors (error.h), output files, a JSON
+ * writer, pi. */
 #ifndef GALLOP_CORE_H
 #define GALLOP_CORE_H
 
 #include <stdio.h>
 #include <stddef.h>
 
-#define GAL_PI 3.14159265358979323846
+#include "gallop/base/error.h"
 
-/* One status enum for the whole library: 0 success, negative failure. */
-typedef enum {
-    GAL_OK = 0,
-    GAL_EINPUT = -1,  /* bad input: scene, table, option (exit 2) */
-    GAL_EFAIL = -2,   /* the computation failed: no convergence, lost stability, NaN (exit 1) */
-    GAL_ENOMEM = -3,  /* out of memory (exit 1) */
-    GAL_EIO = -4      /* a file could not be read or written (exit 2 when reading input) */
-} gal_status;
-
-/* The last error message (library code sets it, main prints it). */
-const char *gal_error_message(void);
-/* Set the message (printf format) and return `status` so that callers can `return gal_error(...)`. */
-int gal_error(int status, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
+#ifdef __cplusplus
+extern "C" {
 #endif
-    ;
-void gal_error_clear(void);
-/* Process exit status for a library status: 0, 1 (computation), 2 (input). */
-int gal_exit_code(int status);
 
-/* Wall-clock seconds from an arbitrary origin (monotonic). */
-double gal_wall_time(void);
+#define GAL_PI 3.14159265358979323846
 
 /* ---- output files that appear whole or not at all ----
  * gal_ofile_open writes to "<path>.tmp.<pid>"; gal_ofile_close renames it to <path> on success
@@ -71,5 +54,9 @@ void gal_json_arr_end(gal_json *j);
 void gal_json_kv_num(gal_json *j, const char *key, double v);
 void gal_json_kv_int(gal_json *j, const char *key, long v);
 void gal_json_kv_str(gal_json *j, const char *key, const char *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

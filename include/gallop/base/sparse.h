@@ -3,6 +3,10 @@
 #ifndef GALLOP_BASE_SPARSE_H
 #define GALLOP_BASE_SPARSE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Compressed sparse column, upper triangle (row <= col), for the free degrees of freedom. */
 typedef struct gal_csc {
     int n;        /* rows = columns */
@@ -21,5 +25,9 @@ void gal_csc_symv(const gal_csc *A, const double *x, double *y);
 
 /* Index of entry (i, j), i <= j, in the pattern, or -1. */
 int gal_csc_find(const gal_csc *A, int i, int j);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

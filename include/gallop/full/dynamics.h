@@ -10,6 +10,10 @@
 
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* External generalized forces: add F(t, q, v) to f (configuration-sized; entries of fixed dofs are
  * ignored). v is configuration-sized too (zero at fixed dofs). Returns a status. */
 typedef struct gal_force {
@@ -57,5 +61,9 @@ gal_dyn *gal_dyn_free(gal_dyn *d);
 int gal_dyn_step(gal_dyn *d);
 /* Kinetic + elastic + gravity energy, J. */
 double gal_dyn_energy(const gal_dyn *d);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -35,6 +35,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_AERO_MAX_COEF 10.0   /* |C_D|, |C_L|, |C_M| above this are rejected as absurd */
 
 /* Which loads gal_aero_load computes (bit flags; the effects aero_drag, aero_lift, aero_moment). */
@@ -92,5 +96,9 @@ int gal_aero_load(const gal_aero_table *t, const double tan[3], const double d1[
 int gal_aero_load_deriv(const gal_aero_table *t, const double tan[3], const double d1[3],
                         const double wrel[3], double rho, double diam, unsigned flags,
                         double f[3], double *m, double df[9], double dm[3]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

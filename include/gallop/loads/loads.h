@@ -12,6 +12,10 @@
 #include "gallop/reduced/rdyn.h"
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct gal_loads {
     const gal_aero_table *table;
     unsigned flags;          /* GAL_AERO_DRAG | GAL_AERO_LIFT | GAL_AERO_MOMENT */
@@ -43,5 +47,9 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
 /* Static equilibrium under the mean wind (drag, lift and moment of the mean flow, no motion): q
  * is updated in place (start: the no-wind equilibrium). */
 int gal_loads_static(gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

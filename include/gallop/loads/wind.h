@@ -38,6 +38,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Values match gal_turbulence in scene.h (GAL_TURB_KAIMAL = 1, ...). */
 typedef enum {
     GAL_WIND_KAIMAL = 1,
@@ -97,5 +101,9 @@ double gal_wind_u_at(const gal_wind *w, int j, double t);
 /* Variance the discrete spectrum carries, sum_m S(f_m) df (m^2/s^2): the expected variance of
  * every history; sigma^2 minus what lies below df and above the Nyquist frequency. */
 double gal_wind_variance(const gal_wind *w);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

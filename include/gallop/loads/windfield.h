@@ -8,6 +8,10 @@
 #include "gallop/scene/scene.h"
 #include "gallop/loads/wind.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_WINDFIELD_POINTS 65       /* points along the span, supports included */
 #define GAL_WINDFIELD_TIME_STEP 0.05  /* s: 20 Hz */
 #define GAL_WINDFIELD_EXTRA_TIME 1.0  /* s: the record outlasts the run by this much */
@@ -18,5 +22,9 @@
  * other fields take gal_wind_params_default's values. The parameters are not validated here
  * (gal_wind_alloc does it). GAL_EINPUT with a message when [wind] turbulence is none. */
 int gal_windfield_params(const gal_scene *sc, gal_wind_params *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -22,6 +22,10 @@
 #include "gallop/base/sparse.h"
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_DAMPING_BAND_HZ 5.0    /* Hz: default band limit of modal damping */
 #define GAL_DAMPING_MAX_MODES 300  /* modes in the band at most */
 
@@ -61,5 +65,9 @@ int gal_damping_project(const gal_damping *c, const double *phi, int n, double *
 /* The damping ratio a mode of shape phi (ndof) and circular frequency omega gets:
  * phi^T C phi / (2 omega phi^T M phi). */
 double gal_damping_ratio(const gal_damping *c, const double *phi, double omega);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

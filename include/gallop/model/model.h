@@ -8,9 +8,17 @@
 #include "gallop/scene/scene.h"
 #include "gallop/statics/statics.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_GRAVITY 9.80665 /* m/s^2, standard gravity */
 
 /* GAL_EINPUT when the scene asks for something the model cannot represent (with the key). */
 int gal_model_rod_params(const gal_scene *sc, gal_rod_params *p, gal_statics_spec *spec, double *value);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

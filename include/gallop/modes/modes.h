@@ -8,6 +8,10 @@
 
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum {
     GAL_FAMILY_VERTICAL,   /* in-plane, normal to the conductor */
     GAL_FAMILY_HORIZONTAL, /* out of the plane of the sagged span */
@@ -54,5 +58,9 @@ int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMIL
                    int max_modes, gal_modes *out);
 
 void gal_modes_clear(gal_modes *m);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -9,6 +9,10 @@
 #include "gallop/scene/scene.h"
 #include "gallop/statics/statics.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* DIR/summary.json, DIR/modes.csv, DIR/shapes.csv, DIR/equilibrium.csv; `want` is what the scene
  * asked per family. */
 int gal_report_modes(const char *dir, const gal_scene *sc, const gal_equilibrium *eq,
@@ -17,5 +21,9 @@ int gal_report_modes(const char *dir, const gal_scene *sc, const gal_equilibrium
 /* The table of `gallop modes` (equilibrium figures, then one line per selected mode). */
 void gal_report_modes_table(FILE *fp, const gal_scene *sc, const gal_equilibrium *eq,
                             const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall_time_s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -6,6 +6,10 @@
 #include "gallop/scene/scene.h"
 #include "gallop/run/sim.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct gal_sim_measures {
     double time_to_steady_s;      /* vertical envelope within 5% of its final level from then on */
     double rise_time_s;           /* vertical envelope first at 90% of its final level */
@@ -29,5 +33,9 @@ int gal_sim_mid_probe(const gal_sim_result *r);
 int gal_sim_write_summary(const char *path, const gal_scene *sc, const gal_sim_result *r);
 int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_result *full,
                           const gal_sim_result *red, gal_compare_figures *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 #include "gallop/reduced/reduced.h"
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A distributed load per unit length at a point of the span (N/m and N m/m): position r, velocity
  * rdot, unit tangent tan, section reference direction d1, at time t and span abscissa x. Both models
  * evaluate their loads through it. */
@@ -65,5 +69,9 @@ int gal_rdyn_advance(gal_rdyn *d, double t_target);
 int gal_rdyn_sample(gal_rdyn *d, double t_out, double t_end, double *y_out);
 /* Steps taken and rejected by the adaptive control. */
 void gal_rdyn_counts(const gal_rdyn *d, long *steps, long *rejected);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

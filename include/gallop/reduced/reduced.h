@@ -17,6 +17,10 @@
 #include "gallop/modes/modes.h"
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* An observed quantity: w[0] u[q[0]] + w[1] u[q[1]] of the displacement u = q - q_eq over the
  * configuration (q[1] = -1: one entry). Positions and slopes between nodes are such. */
 typedef struct gal_obs {
@@ -77,5 +81,9 @@ int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const doubl
  * the elements; what the condensation corrects; for comparison). */
 int gal_reduced_projected_force(const gal_reduced *rm, const gal_rod *rod, const double *q_eq,
                                 const double *eta, double *f, double *work_q, double *work_g);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

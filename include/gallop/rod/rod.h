@@ -17,6 +17,10 @@
 
 #include "gallop/base/sparse.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct gal_rod_params {
     double length;            /* m, horizontal span L */
     double height_difference; /* m, right support minus left */
@@ -93,4 +97,8 @@ void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t
 
 /* Change the unstretched length (rest lengths and lumped masses follow); reference frames stay. */
 void gal_rod_set_unstretched_length(gal_rod *rod, double L0);
+#ifdef __cplusplus
+}
+#endif
+
 #endif

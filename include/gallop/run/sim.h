@@ -10,6 +10,10 @@
 #include "gallop/scene/scene.h"
 #include "gallop/statics/statics.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum { GAL_MODEL_FULL, GAL_MODEL_REDUCED } gal_model_kind;
 
 /* What the two models share: equilibrium, modes, loads and wind (built once per scene). */
@@ -49,5 +53,9 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res);
 void gal_sim_result_clear(gal_sim_result *res);
 /* trace.csv of a run (temporary file, then rename). */
 int gal_sim_write_trace(const char *path, const gal_sim_result *res);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

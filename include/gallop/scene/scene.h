@@ -5,6 +5,10 @@
 
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define GAL_PATH_MAX 1024
 #define GAL_MAX_PROBES 16
 
@@ -55,7 +59,12 @@ typedef struct gal_scene {
         double eccentricity;      /* m, offset of the ice mass centre from the axis */
         double polar_inertia;     /* kg m^2/m, about the conductor axis; default
                                      mass_per_length (diameter^2/4 + eccentricity^2) */
-        char aero_table[GAL_PATH_MAX]; /* CSV alpha_deg,cd,cl,cm, resolved path, or "" */
+        char aero_table[GAL_PATH_MAX]; /* CSV alpha_deg,cd,cl,cm, resolved path, or ""; the scene
+                                   * only checks that it is a readable file: gal_model_aero_table
+                                   * (gallop/model/tables.h) reads it */
+        int aero_table_line;      /* where aero_table was given: its line in the scene file, -1 a
+                                   * --set, 0 not given (for messages about the table) */
+        char aero_table_given[128]; /* aero_table as given, printable and shortened, for messages */
         double attack_angle;      /* rad (scene: deg): the section's angle of attack at rest for a
                                    * horizontal wind normal to the span (orientation of the ice) */
     } ice;
@@ -110,14 +119,20 @@ extern const char *const gal_effect_names[GAL_FX_COUNT];
  * if GALLOP_DATA is set, else data/conductors.csv if it exists in the current directory, else
  * conductors.csv in the parent of the scene's directory, since scenes live in data/scenes/).
  * The table is read only when conductor.name is given; the scene's conductor keys override its
- * row. An [ice] aero_table is read and checked here (gal_aero_table_read), whatever the command, so
- * that a bad table is refused as bad input before anything is computed or written. Returns GAL_OK, or GAL_EINPUT / GAL_EIO (unreadable file) with a message
+ * row. An [ice] aero_table is resolved and must be a readable regular file; its contents are not
+ * read here (the scene reader depends on the base alone): gal_model_aero_table reads and checks
+ * it, with a message that names the scene file, the line and the key as those below.
+ * Returns GAL_OK, or GAL_EINPUT / GAL_EIO (unreadable file) with a message
  * "FILE:LINE: [section] key = value: what is wrong; allowed: range" ("--set: ..." for overrides,
- * "FILE: ..." for a missing key). The ranges are listed in src/scene/scene.c (table `keys`). */
+ * "FILE: ..." for a missing key). The ranges are listed in src/scene/keys.c (table `scn_keys`). */
 int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides, int n,
                    const char *conductors_csv);
 
 /* Print the resolved scene as INI (every key, with its unit in a comment). */
 void gal_scene_print(const gal_scene *sc, FILE *fp);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -9,6 +9,10 @@
 #ifndef GALLOP_CATENARY_H
 #define GALLOP_CATENARY_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct gal_catenary {
     double L, h;   /* m: span (horizontal) and height difference */
     double w;      /* N/m: weight per unstretched length (0: no gravity, a straight line) */
@@ -28,5 +32,9 @@ void gal_catenary_point(const gal_catenary *c, double s, double *x, double *z, d
 
 /* Mid-span sag below the chord at x = L/2 (m). */
 double gal_catenary_sag(const gal_catenary *c);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,6 +8,10 @@
 #include "gallop/statics/catenary.h"
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum { GAL_BY_TENSION = 0, GAL_BY_SAG = 1, GAL_BY_LENGTH = 2 } gal_statics_spec;
 
 typedef struct gal_statics_opts {
@@ -49,5 +53,9 @@ int gal_statics_solve_loaded(gal_rod *rod, double *q, const double *fext, double
 
 /* Mid-span sag below the chord of a configuration (quadratic interpolation at x = L/2), m. */
 double gal_rod_sag(const gal_rod *rod, const double *q);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

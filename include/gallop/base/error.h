@@ -1,0 +1,40 @@
+/* error.h: the library's status codes, its error messages (library code sets one, the caller
+ * prints it), the exit status of a status, and a wall clock. */
+#ifndef GALLOP_ERROR_H
+#define GALLOP_ERROR_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* One status enum for the whole library: 0 success, negative failure. */
+typedef enum {
+    GAL_OK = 0,
+    GAL_EINPUT = -1,  /* bad input: scene, table, option (exit 2) */
+    GAL_EFAIL = -2,   /* the computation failed: no convergence, lost stability, NaN (exit 1) */
+    GAL_ENOMEM = -3,  /* out of memory (exit 1) */
+    GAL_EIO = -4      /* a file could not be read or written (exit 2 when reading input) */
+} gal_status;
+
+/* The last error message of the calling thread (library code sets it, main prints it); "unknown
+ * error" when the thread has set none. Each thread has its own message. */
+const char *gal_error_message(void);
+/* Set the calling thread's message (printf format; the arguments may include the current
+ * message) and return `status` so that callers can `return gal_error(...)`. */
+int gal_error(int status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+void gal_error_clear(void);
+/* Process exit status for a library status: 0, 1 (computation), 2 (input). */
+int gal_exit_code(int status);
+
+/* Wall-clock seconds from an arbitrary origin (monotonic). */
+double gal_wall_time(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,117 @@
+/* keys.c: the scene keys, one row per key of DESIGN.md's table ("Scene files"): section, name,
+ * type, allowed range, unit; the effect names; looking keys and sections up by name. */
+#include "scene_impl.h"
+
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+const char *const gal_effect_names[GAL_FX_COUNT] = {
+    "gravity", "extension", "bending", "torsion", "ice_eccentricity", "aero_drag",
+    "aero_lift", "aero_moment", "aero_damping", "turbulence", "damping"};
+
+const char *const scn_twist_names[] = {"clamped", "free", NULL};
+const char *const scn_start_names[] = {"rest", "mean_wind", NULL};
+const char *const scn_turb_names[] = {"none", "kaimal", "davenport", "von_karman", NULL};
+static const char *const sections[] = {"span", "conductor", "ice", "wind", "effects",
+                                       "model", "simulation", "output", NULL};
+
+#define OFF(m) offsetof(gal_scene, m)
+#define NUM(s, k, m, lo, lop, hi, hip, u) {s, k, T_NUM, OFF(m), lo, hi, lop, hip, 1.0, u, NULL}
+#define INT(s, k, m, lo, hi) {s, k, T_INT, OFF(m), lo, hi, 0, 0, 1.0, "count", NULL}
+#define FX(i) {"effects", NULL, T_FX, i, 0, 1, 0, 0, 1.0, "on | off", NULL}
+
+const keydef scn_keys[K_COUNT] = {
+    NUM("span", "length", span.length, 0, 1, 5000, 0, "m"),
+    NUM("span", "height_difference", span.height_difference, -5000, 1, 5000, 1, "m"),
+    NUM("span", "horizontal_tension", span.horizontal_tension, 0, 1, 5e6, 0, "N"),
+    NUM("span", "sag", span.sag, 0, 1, 2500, 1, "m"),
+    NUM("span", "unstretched_length", span.unstretched_length, 0, 1, 10000, 0, "m"),
+    {"span", "end_twist", T_ENUM, 0, 0, 0, 0, 0, 1.0, "clamped | free", scn_twist_names},
+    {"conductor", "name", T_NAME, 0, 0, 0, 0, 0, 1.0, "a row of conductors.csv", NULL},
+    NUM("conductor", "diameter", conductor.diameter, 0, 1, 0.2, 0, "m"),
+    NUM("conductor", "mass_per_length", conductor.mass_per_length, 0, 1, 100, 0, "kg/m"),
+    NUM("conductor", "axial_stiffness", conductor.axial_stiffness, 0, 1, 1e10, 0, "N"),
+    NUM("conductor", "bending_stiffness", conductor.bending_stiffness, 0, 0, 1e6, 0, "N m^2"),
+    NUM("conductor", "torsional_stiffness", conductor.torsional_stiffness, 0, 1, 1e6, 0, "N m^2/rad"),
+    NUM("conductor", "polar_inertia", conductor.polar_inertia, 0, 1, 10, 0, "kg m^2/m"),
+    NUM("conductor", "damping_ratio", conductor.damping_ratio, 0, 0, 1, 1, "-"),
+    NUM("ice", "mass_per_length", ice.mass_per_length, 0, 1, 100, 0, "kg/m"),
+    NUM("ice", "eccentricity", ice.eccentricity, -0.5, 0, 0.5, 0, "m"),
+    NUM("ice", "polar_inertia", ice.polar_inertia, 0, 0, 10, 0, "kg m^2/m"),
+    {"ice", "aero_table", T_PATH, 0, 0, 0, 0, 0, 1.0, "CSV alpha_deg,cd,cl,cm", NULL},
+    {"ice", "attack_angle", T_NUM, OFF(ice.attack_angle), -180, 180, 0, 0, DEG,
+     "deg, angle of attack of a horizontal wind normal to the span on the section at rest", NULL},
+    NUM("wind", "speed", wind.speed, 0, 0, 80, 0, "m/s"),
+    {"wind", "yaw", T_NUM, OFF(wind.yaw), 0, 180, 0, 0, DEG, "deg, 90 = normal to the span", NULL},
+    NUM("wind", "air_density", wind.air_density, 0, 1, 5, 0, "kg/m^3"),
+    {"wind", "turbulence", T_ENUM, 0, 0, 0, 0, 0, 1.0, "none | kaimal | davenport | von_karman",
+     scn_turb_names},
+    NUM("wind", "intensity", wind.intensity, 0, 0, 1, 0, "-, sigma_u / U"),
+    NUM("wind", "coherence_decay", wind.coherence_decay, 0, 1, 100, 0, "-, C in exp(-C f dx / U)"),
+    {"wind", "seed", T_LONG, OFF(wind.seed), 0, 4294967295.0, 0, 0, 1.0, "integer", NULL},
+    FX(0), FX(1), FX(2), FX(3), FX(4), FX(5), FX(6), FX(7), FX(8), FX(9), FX(10),
+    INT("model", "elements", model.elements, 4, 200000),
+    INT("model", "modes_vertical", model.modes_vertical, 0, 200),
+    INT("model", "modes_horizontal", model.modes_horizontal, 0, 200),
+    INT("model", "modes_torsional", model.modes_torsional, 0, 200),
+    NUM("model", "identification_amplitude", model.identification_amplitude, 0, 0, 100, 0,
+        "m, largest translation of the reduced model's identification; 0 = max(1 m, sag)"),
+    {"model", "identification_twist", T_NUM, OFF(model.identification_twist), 0, 90, 1, 0, DEG,
+     "deg, largest twist of the reduced model's identification", NULL},
+    NUM("simulation", "duration", simulation.duration, 0, 1, 1e6, 0, "s"),
+    NUM("simulation", "time_step", simulation.time_step, 0, 0, 1000, 0, "s, 0 = chosen by gallop"),
+    {"simulation", "probes", T_PROBES, 0, 0, 1, 1, 1, 1.0, "fractions of the span, comma list",
+     NULL},
+    NUM("simulation", "wind_ramp", simulation.wind_ramp, 0, 0, 1e4, 0, "s, the mean wind rises from 0 over this time"),
+    NUM("simulation", "wind_reverse_time", simulation.wind_reverse_time, 0, 0, 1e6, 0,
+        "s, the wind reverses its direction at this time; 0 = never"),
+    NUM("simulation", "output_interval", simulation.output_interval, 0, 0, 10, 0, "s, trace sampling; 0 = chosen"),
+    NUM("simulation", "rho_inf", simulation.rho_inf, 0, 0, 1, 0,
+        "-, full model: spectral radius at infinite frequency (1 = no numerical dissipation)"),
+    NUM("simulation", "tolerance", simulation.tolerance, 0, 1, 0.1, 0, "-, reduced model: relative error per step"),
+    {"simulation", "start", T_ENUM, 0, 0, 0, 0, 0, 1.0,
+     "rest | mean_wind (rest: the wind ramps in over wind_ramp; mean_wind: from the equilibrium under the mean wind)",
+     scn_start_names},
+    {"output", "directory", T_DIR, 0, 0, 0, 0, 0, 1.0, "path", NULL},
+};
+
+const char *scn_key_name(int k)
+{
+    return scn_keys[k].type == T_FX ? gal_effect_names[scn_keys[k].off] : scn_keys[k].key;
+}
+
+int scn_find_section(const char *s)
+{
+    for (int i = 0; sections[i]; i++)
+        if (!strcmp(s, sections[i])) return i;
+    return -1;
+}
+
+int scn_find_key(const char *sec, const char *key)
+{
+    for (int k = 0; k < K_COUNT; k++)
+        if (!strcmp(scn_keys[k].sec, sec) && !strcmp(scn_key_name(k), key)) return k;
+    return -1;
+}
+
+/* "length, height_difference, ..." for a section */
+const char *scn_key_list(const char *sec, char *buf, size_t n)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int k = 0; k < K_COUNT; k++) {
+        if (strcmp(scn_keys[k].sec, sec)) continue;
+        int w = snprintf(buf + used, n - used, "%s%s", used ? ", " : "", scn_key_name(k));
+        if (w < 0 || (size_t)w >= n - used) break;
+        used += (size_t)w;
+    }
+    return buf;
+}
+
+const char *scn_section_list(void)
+{
+    return "span, conductor, ice, wind, effects, model, simulation, output";
+}
+
+int scn_is_spec(int k) { return k == K_TENSION || k == K_SAG || k == K_ULENGTH; }

@@ -1,0 +1,129 @@
+/* print.c: the resolved scene printed back as INI that gallop reads (every key, with its unit in a
+ * comment, numbers with the digits that read back to the same value). */
+#include "scene_impl.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- printing ---- */
+
+static void put_num(FILE *fp, const char *key, double v, const char *unit)
+{
+    char b[40];
+    fprintf(fp, "%s = %s ; %s\n", key, scn_fmt_num(v, b, sizeof b), unit);
+}
+
+/* A key in its file unit, with the digits that read back to the same SI value. */
+static void put_key(FILE *fp, const gal_scene *sc, int k)
+{
+    const keydef *kd = &scn_keys[k];
+    double v = *(const double *)((const char *)sc + kd->off);
+    if (kd->scale == 1.0) {
+        put_num(fp, kd->key, v, kd->unit);
+        return;
+    }
+    char b[40];
+    for (int p = 15; p <= 17; p++) {
+        snprintf(b, sizeof b, "%.*g", p, v / kd->scale);
+        if (strtod(b, NULL) * kd->scale == v) break;
+    }
+    fprintf(fp, "%s = %s ; %s\n", kd->key, b, kd->unit);
+}
+
+static const char *printable(const char *s, char *out, size_t n)
+{
+    size_t i = 0;
+    for (; s[i] && i + 1 < n; i++) out[i] = (s[i] >= 0x20 && s[i] < 0x7f) ? s[i] : '?';
+    out[i] = '\0';
+    return out;
+}
+
+static void print_span_conductor_ice(const gal_scene *sc, FILE *fp)
+{
+    fprintf(fp, "\n[span]\n");
+    put_key(fp, sc, K_LENGTH);
+    put_key(fp, sc, K_HDIFF);
+    put_key(fp, sc, sc->span.spec == GAL_SPEC_TENSION ? K_TENSION
+                    : sc->span.spec == GAL_SPEC_SAG   ? K_SAG
+                                                      : K_ULENGTH);
+    fprintf(fp, "end_twist = %s ; clamped | free\n",
+            sc->span.end_twist == GAL_TWIST_FREE ? "free" : "clamped");
+
+    fprintf(fp, "\n[conductor]\n");
+    if (sc->conductor.name[0]) {
+        fprintf(fp, "; a row of conductors.csv; the keys below override it\n");
+        fprintf(fp, "name = %s\n", sc->conductor.name);
+    }
+    for (int k = K_DIAM; k <= K_ZETA; k++) put_key(fp, sc, k);
+
+    fprintf(fp, "\n[ice]\n");
+    if (sc->ice.present) {
+        for (int k = K_IMASS; k <= K_IPOLAR; k++) put_key(fp, sc, k);
+        if (sc->ice.aero_table[0]) {
+            fprintf(fp, "; CSV alpha_deg,cd,cl,cm\n");
+            fprintf(fp, "aero_table = %s\n", sc->ice.aero_table);
+        }
+        put_key(fp, sc, K_IANGLE);
+    } else {
+        fprintf(fp, "; no ice\n");
+    }
+}
+
+static void print_wind_effects(const gal_scene *sc, FILE *fp)
+{
+    fprintf(fp, "\n[wind]\n");
+    put_key(fp, sc, K_SPEED);
+    put_key(fp, sc, K_YAW); /* degrees that read back to the same radians */
+    put_key(fp, sc, K_RHO);
+    int t = sc->wind.turbulence;
+    fprintf(fp, "turbulence = %s ; %s\n", scn_turb_names[t >= 0 && t <= 3 ? t : 0], scn_keys[K_TURB].unit);
+    put_key(fp, sc, K_INTENS);
+    put_key(fp, sc, K_COH);
+    fprintf(fp, "seed = %ld ; integer\n", sc->wind.seed);
+
+    fprintf(fp, "\n[effects]\n");
+    for (int i = 0; i < GAL_FX_COUNT; i++)
+        fprintf(fp, "%s = %s\n", gal_effect_names[i], sc->effect[i] ? "on" : "off");
+}
+
+static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
+{
+    char nb[40];
+    fprintf(fp, "\n[model]\n");
+    fprintf(fp, "elements = %d ; count\n", sc->model.elements);
+    fprintf(fp, "modes_vertical = %d ; count\n", sc->model.modes_vertical);
+    fprintf(fp, "modes_horizontal = %d ; count\n", sc->model.modes_horizontal);
+    fprintf(fp, "modes_torsional = %d ; count\n", sc->model.modes_torsional);
+    put_key(fp, sc, K_IDAMP);
+    put_key(fp, sc, K_IDTW);
+
+    fprintf(fp, "\n[simulation]\n");
+    put_key(fp, sc, K_DUR);
+    put_key(fp, sc, K_DT);
+    fprintf(fp, "probes = ");
+    for (int i = 0; i < sc->simulation.nprobes && i < GAL_MAX_PROBES; i++)
+        fprintf(fp, "%s%s", i ? ", " : "", scn_fmt_num(sc->simulation.probes[i], nb, sizeof nb));
+    fprintf(fp, " ; %s\n", scn_keys[K_PROBES].unit);
+    put_key(fp, sc, K_RAMP);
+    put_key(fp, sc, K_REVERSE);
+    put_key(fp, sc, K_OUTDT);
+    put_key(fp, sc, K_RHOINF);
+    put_key(fp, sc, K_TOL);
+    fprintf(fp, "start = %s ; rest | mean_wind\n", scn_start_names[sc->simulation.start_mean_wind ? 1 : 0]);
+
+    fprintf(fp, "\n[output]\n");
+    fprintf(fp, "; path\n");
+    fprintf(fp, "directory = %s\n", sc->output.directory);
+}
+
+void gal_scene_print(const gal_scene *sc, FILE *fp)
+{
+    char b[GAL_PATH_MAX];
+    fprintf(fp, "# gallop scene \"%s\", resolved from %s\n", printable(sc->name, b, 256),
+            printable(sc->path, b + 256, sizeof b - 256));
+    fprintf(fp, "# every key with its value in use; units in the comments (SI, angles in deg)\n");
+    print_span_conductor_ice(sc, fp);
+    print_wind_effects(sc, fp);
+    print_model_simulation_output(sc, fp);
+}
