@@ -32,6 +32,8 @@
 /* reduced: the reduced (modal) model and its time integration */
 #include "gallop/reduced/reduced.h"
 #include "gallop/reduced/rdyn.h"
+#include "gallop/reduced/rom.h"
+#include "gallop/reduced/rom_sim.h"
 /* run: galloping runs */
 #include "gallop/run/sim.h"
 /* analysis: spectra, stability, galloping onset, accuracy */

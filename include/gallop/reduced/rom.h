@@ -20,6 +20,10 @@
 #include "gallop/modes/modes.h"
 #include "gallop/rod/rod.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct gal_rom_opts {
     int derivatives;        /* 1: add the static modal derivatives (default); 0: linear modes only */
     double deflation_tol;   /* drop a basis vector whose M-norm falls below this share after
@@ -106,5 +110,9 @@ int gal_rom_internal_force(gal_rom *m, const double *x, double *f);
 void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, double *work);
 /* Configuration entry qi of the reconstructed state (rate: of its velocity), O(r). */
 double gal_rom_entry(const gal_rom *m, int qi, int rate);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -8,6 +8,10 @@
 #include "gallop/reduced/rom.h"
 #include "gallop/run/sim.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct gal_rom_sim_opts {
     int derivatives;          /* basis with the modal derivatives (1, default) or modes only (0) */
     double h;                 /* s: time step; <= 0: the full model's */
@@ -25,5 +29,9 @@ typedef struct gal_rom_sim_info {
 
 void gal_rom_sim_default_opts(gal_rom_sim_opts *o);
 int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result *res, gal_rom_sim_info *info);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
