@@ -26,3 +26,30 @@ void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t
     gal_cross3(t, a, b);
     for (int k = 0; k < 3; k++) d1[k] = cos(th) * a[k] + sin(th) * b[k];
 }
+
+int gal_rod_frames_init(gal_rod *rod, const double *q0)
+{
+    int nel = rod->p.elements;
+    for (int j = 0; j < nel; j++) {
+        /* reference frame: unit tangent of q0 and a first director normal to it, chosen as the
+         * horizontal normal y carried into the plane normal to the tangent */
+        double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j;
+        for (int k = 0; k < 3; k++) t[k] = q0[3 * (j + 1) + k] - q0[3 * j + k];
+        double le = gal_norm3(t);
+        if (!(le > 0)) {
+            gal_error(GAL_EINPUT, "rod: element %d of the reference geometry has zero length", j);
+            return GAL_EINPUT;
+        }
+        for (int k = 0; k < 3; k++) t[k] /= le;
+        double y[3] = {0, 1, 0}, ty = gal_dot3(t, y);
+        for (int k = 0; k < 3; k++) a[k] = y[k] - ty * t[k];
+        double na = gal_norm3(a);
+        if (na < 1e-6) { /* tangent along y: fall back to z */
+            double z[3] = {0, 0, 1}, tz = gal_dot3(t, z);
+            for (int k = 0; k < 3; k++) a[k] = z[k] - tz * t[k];
+            na = gal_norm3(a);
+        }
+        for (int k = 0; k < 3; k++) a[k] /= na;
+    }
+    return GAL_OK;
+}

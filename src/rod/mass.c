@@ -9,8 +9,7 @@
 #include <string.h>
 
 /* M on the pattern of K: the lumped masses on the diagonal and, for eccentric ice, the coupling
- * of each edge's twist with the translation of its two nodes, 1/2 l0 m_i e (t x c) each (the
- * kinetic energy of the ice centre x + e c(theta): m_i e xdot . (t x c) thetadot). */
+ * of twist and translation (src/rod/ice.c). */
 void gal_rod_mass_build(gal_rod *rod)
 {
     gal_csc *M = rod->M;
@@ -19,28 +18,12 @@ void gal_rod_mass_build(gal_rod *rod)
     if (!rod->mdiag && !(rod->mdiag = malloc((size_t)rod->ndof * sizeof(double)))) return;
     gal_rod_mass_diag(rod, rod->mdiag);
     for (int d = 0; d < rod->ndof; d++) M->val[M->diag[d]] = rod->mdiag[d];
-    if (!rod->ecc_c || !rod->p.torsion) return;
-    int nn = rod->nn;
-    for (int j = 0; j < rod->p.elements; j++) {
-        int dt = rod->dof[3 * nn + j];
-        if (dt < 0) continue;
-        double g[3], *c = rod->ecc_c + 3 * j, *t = rod->tbar + 3 * j;
-        gal_cross3(t, c, g);
-        double f = 0.5 * rod->l0[j] * rod->p.ecc_mass * rod->p.ecc;
-        for (int node = j; node <= j + 1; node++)
-            for (int k = 0; k < 3; k++) {
-                int dx = rod->dof[3 * node + k];
-                if (dx < 0) continue;
-                int a = dx < dt ? dx : dt, b = dx < dt ? dt : dx;
-                int sl = gal_csc_find(M, a, b);
-                if (sl >= 0) M->val[sl] += f * g[k];
-            }
-    }
+    gal_rod_ice_mass(rod); /* the eccentric ice's coupling, if any */
 }
 
 void gal_rod_mass_mult(const gal_rod *rod, const double *x, double *y)
 {
-    if (rod->ecc_c && rod->p.torsion) {
+    if (rod->ecc_c) { /* eccentric ice: M couples twist and translation */
         gal_csc_symv(rod->M, x, y);
         return;
     }

@@ -33,6 +33,35 @@ static void edge_q(int j, int *qi)
     for (int k = 0; k < 6; k++) qi[k] = 3 * j + k;
 }
 
+/* The slot maps: where each local pair of a node or edge stencil lands in the value array of K. */
+static int slot_maps(gal_rod *rod)
+{
+    int nel = rod->p.elements, nn = rod->nn, qi[NL];
+    const gal_csc *A = rod->K;
+    rod->slot_node = malloc((size_t)(nn > 2 ? nn - 2 : 1) * NL * NL * sizeof(int));
+    rod->slot_edge = malloc((size_t)nel * EL * EL * sizeof(int));
+    if (!rod->slot_node || !rod->slot_edge) return GAL_ENOMEM;
+    for (int i = 1; i <= nn - 2; i++) {
+        int *s = rod->slot_node + (size_t)(i - 1) * NL * NL;
+        gal_rod_node_q(rod, i, qi);
+        for (int a = 0; a < NL; a++)
+            for (int b = 0; b < NL; b++) {
+                int da = qi[a] < 0 ? -1 : rod->dof[qi[a]], db = qi[b] < 0 ? -1 : rod->dof[qi[b]];
+                s[a * NL + b] = (da >= 0 && db >= 0 && da <= db) ? gal_csc_find(A, da, db) : -1;
+            }
+    }
+    for (int j = 0; j < nel; j++) {
+        int *s = rod->slot_edge + (size_t)j * EL * EL;
+        edge_q(j, qi);
+        for (int a = 0; a < EL; a++)
+            for (int b = 0; b < EL; b++) {
+                int da = rod->dof[qi[a]], db = rod->dof[qi[b]];
+                s[a * EL + b] = (da >= 0 && db >= 0 && da <= db) ? gal_csc_find(A, da, db) : -1;
+            }
+    }
+    return GAL_OK;
+}
+
 int gal_rod_pattern_build(gal_rod *rod)
 {
     int nel = rod->p.elements, nn = rod->nn;
@@ -87,27 +116,5 @@ int gal_rod_pattern_build(gal_rod *rod)
     free(pairs);
     rod->K = A;
 
-    /* slot maps: where each local pair of a stencil lands in the value array */
-    rod->slot_node = malloc((size_t)(nn > 2 ? nn - 2 : 1) * NL * NL * sizeof(int));
-    rod->slot_edge = malloc((size_t)nel * EL * EL * sizeof(int));
-    if (!rod->slot_node || !rod->slot_edge) return GAL_ENOMEM;
-    for (int i = 1; i <= nn - 2; i++) {
-        int *s = rod->slot_node + (size_t)(i - 1) * NL * NL;
-        gal_rod_node_q(rod, i, qi);
-        for (int a = 0; a < NL; a++)
-            for (int b = 0; b < NL; b++) {
-                int da = qi[a] < 0 ? -1 : rod->dof[qi[a]], db = qi[b] < 0 ? -1 : rod->dof[qi[b]];
-                s[a * NL + b] = (da >= 0 && db >= 0 && da <= db) ? gal_csc_find(A, da, db) : -1;
-            }
-    }
-    for (int j = 0; j < nel; j++) {
-        int *s = rod->slot_edge + (size_t)j * EL * EL;
-        edge_q(j, qi);
-        for (int a = 0; a < EL; a++)
-            for (int b = 0; b < EL; b++) {
-                int da = rod->dof[qi[a]], db = rod->dof[qi[b]];
-                s[a * EL + b] = (da >= 0 && db >= 0 && da <= db) ? gal_csc_find(A, da, db) : -1;
-            }
-    }
-    return GAL_OK;
+    return slot_maps(rod);
 }

@@ -32,6 +32,20 @@ gal_rod *gal_rod_free(gal_rod *rod)
     return NULL;
 }
 
+/* Free dofs numbered node by node (positions, then the twist of the edge that follows), so that
+ * the tangent is banded before any reordering. */
+static void number_dofs(gal_rod *rod)
+{
+    int nn = rod->nn, nel = rod->p.elements, nd = 0;
+    for (int k = 0; k < rod->nq; k++) rod->dof[k] = -1;
+    for (int i = 0; i < nn; i++) {
+        if (i > 0 && i < nn - 1)
+            for (int k = 0; k < 3; k++) rod->free_q[nd] = 3 * i + k, rod->dof[3 * i + k] = nd++;
+        if (rod->p.torsion && i < nel) rod->free_q[nd] = 3 * nn + i, rod->dof[3 * nn + i] = nd++;
+    }
+    rod->ndof = nd;
+}
+
 gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
 {
     if (p->elements < 2 || !(p->length > 0) || !(p->unstretched_length > 0) || !(p->EA > 0) ||
@@ -62,52 +76,15 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
     }
     memcpy(rod->q0, q0, (size_t)rod->nq * sizeof(double));
 
-    /* Free dofs numbered node by node (positions, then the twist of the edge that follows), so
-     * that the tangent is banded before any reordering. */
-    for (int k = 0; k < rod->nq; k++) rod->dof[k] = -1;
-    int nd = 0;
-    for (int i = 0; i < nn; i++) {
-        if (i > 0 && i < nn - 1)
-            for (int k = 0; k < 3; k++) rod->free_q[nd] = 3 * i + k, rod->dof[3 * i + k] = nd++;
-        if (p->torsion && i < nel) rod->free_q[nd] = 3 * nn + i, rod->dof[3 * nn + i] = nd++;
-    }
-    rod->ndof = nd;
-
+    number_dofs(rod);
     gal_rod_set_unstretched_length(rod, p->unstretched_length);
-    for (int j = 0; j < nel; j++) {
-        /* reference frame: unit tangent of q0 and a first director normal to it, chosen as the
-         * horizontal normal y carried into the plane normal to the tangent */
-        double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j;
-        for (int k = 0; k < 3; k++) t[k] = q0[3 * (j + 1) + k] - q0[3 * j + k];
-        double le = gal_norm3(t);
-        if (!(le > 0)) {
-            gal_error(GAL_EINPUT, "rod: element %d of the reference geometry has zero length", j);
-            return gal_rod_free(rod);
-        }
-        for (int k = 0; k < 3; k++) t[k] /= le;
-        double y[3] = {0, 1, 0}, ty = gal_dot3(t, y);
-        for (int k = 0; k < 3; k++) a[k] = y[k] - ty * t[k];
-        double na = gal_norm3(a);
-        if (na < 1e-6) { /* tangent along y: fall back to z */
-            double z[3] = {0, 0, 1}, tz = gal_dot3(t, z);
-            for (int k = 0; k < 3; k++) a[k] = z[k] - tz * t[k];
-            na = gal_norm3(a);
-        }
-        for (int k = 0; k < 3; k++) a[k] /= na;
-    }
+    if (gal_rod_frames_init(rod, q0) != GAL_OK) return gal_rod_free(rod);
     if (gal_rod_pattern_build(rod) != GAL_OK || !(rod->M = gal_csc_clone(rod->K))) {
         gal_error(GAL_ENOMEM, "rod: out of memory building the stiffness pattern");
         return gal_rod_free(rod);
     }
-    if (p->ecc_mass > 0 && p->ecc != 0 && p->torsion) {
-        rod->ecc_c = malloc((size_t)3 * nel * sizeof(double));
-        if (!rod->ecc_c) { gal_error(GAL_ENOMEM, "rod: out of memory"); return gal_rod_free(rod); }
-        for (int j = 0; j < nel; j++) {
-            double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j, b[3];
-            gal_cross3(t, a, b);
-            for (int k = 0; k < 3; k++) rod->ecc_c[3 * j + k] = cos(p->ecc_angle) * a[k] + sin(p->ecc_angle) * b[k];
-        }
-    }
+    if (gal_rod_ice_init(rod) != GAL_OK) return gal_rod_free(rod);
+    gal_rod_terms_init(rod);
     gal_rod_mass_build(rod);
     return rod;
 }
