@@ -47,76 +47,64 @@ static void where(char *buf, size_t sz, const char *name, const int *line, int r
     else snprintf(buf, sz, "%s: row %d", name, r + 1);
 }
 
-/* Validate rows (alpha in degrees) and build the splines. `line` (may be NULL) gives the file
- * line of each row for messages; `col` (may be NULL) the column where each of the 4 fields
- * starts, row-major. */
-gal_aero_table *gal_aero_table_build(const char *name, const char *source, int rows,
-                                     const double *adeg, const double *cd, const double *cl,
-                                     const double *cm, const int *line, const int *col, int *status)
+/* The rows: every value finite and in range, the angles strictly increasing. */
+static int check_rows(const char *name, int rows, const double *adeg, const double *const cv[3],
+                      const int *line, const int *col)
 {
-    *status = GAL_EINPUT;
     char at[1200];
-    const double *cv[3] = {cd, cl, cm};
-    if (!source || !source[0]) {
-        gal_error(GAL_EINPUT, "%s: no '# source:' comment line: every table must say where its "
-                  "numbers come from", name);
-        return NULL;
-    }
     for (int r = 0; r < rows; r++) {
         where(at, sizeof at, name, line, r);
-        if (!isfinite(adeg[r]) || fabs(adeg[r]) > MAX_ALPHA_DEG) {
-            gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %g out of range: finite, within [-%g, %g]",
-                      at, col ? col[4 * r] : 1, adeg[r], MAX_ALPHA_DEG, MAX_ALPHA_DEG);
-            return NULL;
-        }
+        if (!isfinite(adeg[r]) || fabs(adeg[r]) > MAX_ALPHA_DEG)
+            return gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %g out of range: finite, within [-%g, %g]",
+                             at, col ? col[4 * r] : 1, adeg[r], MAX_ALPHA_DEG, MAX_ALPHA_DEG);
         for (int i = 0; i < 3; i++)
-            if (!isfinite(cv[i][r]) || fabs(cv[i][r]) > GAL_AERO_MAX_COEF) {
-                gal_error(GAL_EINPUT, "%s:%d: %s = %g out of range: finite, within [-%g, %g]", at,
-                          col ? col[4 * r + 1 + i] : 2 + i, gal_aero_coef_name[i], cv[i][r],
-                          GAL_AERO_MAX_COEF, GAL_AERO_MAX_COEF);
-                return NULL;
-            }
-        if (r > 0 && !(adeg[r] > adeg[r - 1] + MIN_STEP_DEG)) {
-            gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %.17g %s the previous row's %.17g: angles must "
-                      "be strictly increasing (steps > %g deg)", at, col ? col[4 * r] : 1, adeg[r],
-                      fabs(adeg[r] - adeg[r - 1]) <= MIN_STEP_DEG ? "duplicates" : "is below",
-                      adeg[r - 1], MIN_STEP_DEG);
-            return NULL;
-        }
+            if (!isfinite(cv[i][r]) || fabs(cv[i][r]) > GAL_AERO_MAX_COEF)
+                return gal_error(GAL_EINPUT, "%s:%d: %s = %g out of range: finite, within [-%g, %g]",
+                                 at, col ? col[4 * r + 1 + i] : 2 + i, gal_aero_coef_name[i],
+                                 cv[i][r], GAL_AERO_MAX_COEF, GAL_AERO_MAX_COEF);
+        if (r > 0 && !(adeg[r] > adeg[r - 1] + MIN_STEP_DEG))
+            return gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %.17g %s the previous row's %.17g: angles "
+                             "must be strictly increasing (steps > %g deg)", at,
+                             col ? col[4 * r] : 1, adeg[r],
+                             fabs(adeg[r] - adeg[r - 1]) <= MIN_STEP_DEG ? "duplicates" : "is below",
+                             adeg[r - 1], MIN_STEP_DEG);
     }
-    if (rows < 4) {
-        gal_error(GAL_EINPUT, "%s: %d data rows, at least 4 angles are needed", name, rows);
-        return NULL;
-    }
-    /* ---- period: the closure row is given (span 360) or added (span < 360) ---- */
-    double span = adeg[rows - 1] - adeg[0];
-    int given = 0;
-    where(at, sizeof at, name, line, rows - 1);
-    if (span > 360.0 + CLOSE_TOL) {
-        gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %g: the rows span %g deg, more than one period "
-                  "(allowed: less than 360, or exactly 360 with the last row equal to the first)",
-                  at, col ? col[4 * (rows - 1)] : 1, adeg[rows - 1], span);
-        return NULL;
-    }
-    if (span >= 360.0 - CLOSE_TOL) {
-        given = 1;
-        for (int i = 0; i < 3; i++)
-            if (fabs(cv[i][rows - 1] - cv[i][0]) > CLOSE_TOL) {
-                gal_error(GAL_EINPUT, "%s:%d: %s = %.17g at alpha_first + 360 must equal the first "
-                          "row's %.17g (periodic closure, within %g)", at,
-                          col ? col[4 * (rows - 1) + 1 + i] : 2 + i, gal_aero_coef_name[i], cv[i][rows - 1],
-                          cv[i][0], CLOSE_TOL);
-                return NULL;
-            }
-        if (rows - 1 < 4) {
-            gal_error(GAL_EINPUT, "%s: %d distinct angles (the last row closes the period), at "
-                      "least 4 are needed", name, rows - 1);
-            return NULL;
-        }
-    }
-    int nd = given ? rows - 1 : rows; /* distinct angles */
-    int n = nd + 1;                   /* nodes with the closure */
+    if (rows < 4)
+        return gal_error(GAL_EINPUT, "%s: %d data rows, at least 4 angles are needed", name, rows);
+    return GAL_OK;
+}
 
+/* The period: the closure row is given (the rows span 360 deg: *given = 1) or added (span < 360). */
+static int check_period(const char *name, int rows, const double *adeg, const double *const cv[3],
+                        const int *line, const int *col, int *given)
+{
+    char at[1200];
+    double span = adeg[rows - 1] - adeg[0];
+    *given = 0;
+    where(at, sizeof at, name, line, rows - 1);
+    if (span > 360.0 + CLOSE_TOL)
+        return gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %g: the rows span %g deg, more than one "
+                         "period (allowed: less than 360, or exactly 360 with the last row equal to "
+                         "the first)", at, col ? col[4 * (rows - 1)] : 1, adeg[rows - 1], span);
+    if (span < 360.0 - CLOSE_TOL) return GAL_OK;
+    *given = 1;
+    for (int i = 0; i < 3; i++)
+        if (fabs(cv[i][rows - 1] - cv[i][0]) > CLOSE_TOL)
+            return gal_error(GAL_EINPUT, "%s:%d: %s = %.17g at alpha_first + 360 must equal the "
+                             "first row's %.17g (periodic closure, within %g)", at,
+                             col ? col[4 * (rows - 1) + 1 + i] : 2 + i, gal_aero_coef_name[i],
+                             cv[i][rows - 1], cv[i][0], CLOSE_TOL);
+    if (rows - 1 < 4)
+        return gal_error(GAL_EINPUT, "%s: %d distinct angles (the last row closes the period), at "
+                         "least 4 are needed", name, rows - 1);
+    return GAL_OK;
+}
+
+/* The table over nd distinct angles plus the closure alpha[0] + 2 pi, with its periodic splines. */
+static gal_aero_table *splines(const char *name, const char *source, int nd, const double *adeg,
+                               const double *const cv[3], int *status)
+{
+    int n = nd + 1; /* nodes with the closure */
     gal_aero_table *t = calloc(1, sizeof *t);
     if (!t) goto nomem;
     t->n = n;
@@ -146,6 +134,24 @@ gal_aero_table *gal_aero_table_build(const char *name, const char *source, int r
 nomem:
     *status = gal_error(GAL_ENOMEM, "%s: out of memory building the aerodynamic table", name);
     return gal_aero_table_free(t);
+}
+
+gal_aero_table *gal_aero_table_build(const char *name, const char *source, int rows,
+                                     const double *adeg, const double *cd, const double *cl,
+                                     const double *cm, const int *line, const int *col, int *status)
+{
+    const double *const cv[3] = {cd, cl, cm};
+    int given;
+    *status = GAL_EINPUT;
+    if (!source || !source[0]) {
+        gal_error(GAL_EINPUT, "%s: no '# source:' comment line: every table must say where its "
+                  "numbers come from", name);
+        return NULL;
+    }
+    if (check_rows(name, rows, adeg, cv, line, col) != GAL_OK ||
+        check_period(name, rows, adeg, cv, line, col, &given) != GAL_OK)
+        return NULL;
+    return splines(name, source, given ? rows - 1 : rows, adeg, cv, status);
 }
 
 gal_aero_table *gal_aero_table_make(const char *name, const char *source, int n,
