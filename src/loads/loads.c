@@ -1,4 +1,6 @@
-/* loads.c: quasi-steady aerodynamic loads in a ramped, turbulent, possibly reversing wind. */
+/* loads.c: quasi-steady aerodynamic loads in a ramped, turbulent, possibly reversing wind: the
+ * lists of the terms that are on (loads.h), the point load as their sum (the relative wind, then
+ * the section load), the full model's generalized forces and the statics under the mean wind. */
 #include "gallop/loads/loads.h"
 #include "gallop/base/core.h"
 
@@ -8,30 +10,33 @@
 
 #include "gallop/statics/statics.h"
 
+void gal_loads_init(gal_loads *L)
+{
+    int n = 0;
+    if (L->speed != 0) L->wind_term[n++] = &gal_loads_term_mean_wind;
+    if (L->u && L->nt > 1 && L->nx > 0) L->wind_term[n++] = &gal_loads_term_turbulence;
+    if (L->aero_damping) L->wind_term[n++] = &gal_loads_term_aero_damping;
+    L->nwind = n;
+    L->nsection = gal_aero_terms(L->flags, L->section_term);
+    L->ready = 1;
+}
+
+/* L itself when its lists are made, else a copy in tmp with the lists made from the fields */
+static const gal_loads *ready(const gal_loads *L, gal_loads *tmp)
+{
+    if (L->ready) return L;
+    *tmp = *L;
+    gal_loads_init(tmp);
+    return tmp;
+}
+
 void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
 {
-    double U = L->speed;
-    if (L->ramp_time > 0 && t < L->ramp_time) U *= 0.5 * (1 - cos(GAL_PI * t / L->ramp_time));
-    if (L->u && L->nt > 1 && L->nx > 0) {
-        /* bilinear in (t, x); the field repeats after its duration */
-        double ft = t / L->dt, period = (double)(L->nt - 1);
-        ft = fmod(ft, period);
-        if (ft < 0) ft += period;
-        int k = (int)ft;
-        if (k >= L->nt - 1) k = L->nt - 2;
-        double a = ft - k;
-        double fx = L->nx > 1 ? (x - L->x0) / L->dx : 0;
-        if (fx < 0) fx = 0;
-        if (fx > L->nx - 1) fx = L->nx - 1;
-        int j = (int)fx;
-        if (j >= L->nx - 1) j = L->nx > 1 ? L->nx - 2 : 0;
-        double b = L->nx > 1 ? fx - j : 0;
-        const double *u0 = L->u + (size_t)k * L->nx, *u1 = u0 + L->nx;
-        int j1 = L->nx > 1 ? j + 1 : j;
-        double u = (1 - a) * ((1 - b) * u0[j] + b * u0[j1]) + a * ((1 - b) * u1[j] + b * u1[j1]);
-        double ramp = (L->ramp_time > 0 && t < L->ramp_time) ? 0.5 * (1 - cos(GAL_PI * t / L->ramp_time)) : 1.0;
-        U += ramp * u;
-    }
+    gal_loads tmp;
+    L = ready(L, &tmp);
+    double ramp = gal_loads_ramp(L, t), U = 0;
+    for (int k = 0; k < L->nwind; k++)   /* the along-wind speed: mean wind, turbulence */
+        if (L->wind_term[k]->speed) U += L->wind_term[k]->speed(L, t, x, ramp);
     if (L->reverse_time > 0 && t >= L->reverse_time) U = -U;
     for (int k = 0; k < 3; k++) w[k] = U * L->dir[k];
 }
@@ -39,12 +44,13 @@ void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
 int gal_loads_point(void *ctx, double t, double x, const double r[3], const double rdot[3],
                     const double tan[3], const double d1[3], double f[3], double *m)
 {
-    const gal_loads *L = ctx;
+    gal_loads tmp;
+    const gal_loads *L = ready(ctx, &tmp);
     (void)r;
     double w[3];
     gal_loads_wind(L, t, x, w);
-    if (L->aero_damping)
-        for (int k = 0; k < 3; k++) w[k] -= rdot[k];
+    for (int k = 0; k < L->nwind; k++)   /* the relative wind: aerodynamic damping */
+        if (L->wind_term[k]->relative) L->wind_term[k]->relative(L, rdot, w);
     if (L->attack_angle != 0) {
         /* the section's reference direction turned by -attack_angle about the tangent: the
          * angle of attack, measured from it, grows by attack_angle */
@@ -53,14 +59,17 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
         b[1] = tan[2] * d1[0] - tan[0] * d1[2];
         b[2] = tan[0] * d1[1] - tan[1] * d1[0];
         for (int k = 0; k < 3; k++) d[k] = c * d1[k] - s * b[k];
-        return gal_aero_load(L->table, tan, d, w, L->rho, L->diam, L->flags, f, m);
+        return gal_aero_load_terms(L->table, tan, d, w, L->rho, L->diam, L->section_term,
+                                   L->nsection, f, m, NULL, NULL);
     }
-    return gal_aero_load(L->table, tan, d1, w, L->rho, L->diam, L->flags, f, m);
+    return gal_aero_load_terms(L->table, tan, d1, w, L->rho, L->diam, L->section_term, L->nsection,
+                               f, m, NULL, NULL);
 }
 
 int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f)
 {
-    const gal_loads *L = ctx;
+    gal_loads tmp;
+    const gal_loads *L = ready(ctx, &tmp);
     const gal_rod *rod = L->rod;
     int nel = rod->p.elements, nn = rod->nn;
     for (int j = 0; j < nel; j++) {
@@ -70,7 +79,7 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
             rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
         }
         gal_rod_material_frame(rod, q, j, tg, d1);
-        int st = gal_loads_point(ctx, t, r[0], r, rd, tg, d1, fe, &me);
+        int st = gal_loads_point((void *)L, t, r[0], r, rd, tg, d1, fe, &me);
         if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
         double l0 = rod->l0[j];
         for (int k = 0; k < 3; k++) {
@@ -92,6 +101,7 @@ int gal_loads_static(gal_rod *rod, double *q, const gal_loads *L, double force_t
     if (!f || !qold || !v) { free(f); free(qold); free(v); return gal_error(GAL_ENOMEM, "out of memory"); }
     gal_loads Ls = *L;
     Ls.u = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0, Ls.rod = rod;
+    gal_loads_init(&Ls);
     double scale = fmax(rod->p.length, 1.0);
     int it;
     for (it = 0; it < max_iter; it++) {
