@@ -10,47 +10,35 @@
 
 #include "gallop/statics/statics.h"
 
-void gal_loads_init(gal_loads *L)
+void gal_loads_list_make(const gal_loads *L, gal_loads_list *list)
 {
     int n = 0;
-    if (L->speed != 0) L->wind_term[n++] = &gal_loads_term_mean_wind;
-    if (L->u && L->nt > 1 && L->nx > 0) L->wind_term[n++] = &gal_loads_term_turbulence;
-    if (L->aero_damping) L->wind_term[n++] = &gal_loads_term_aero_damping;
-    L->nwind = n;
-    L->nsection = gal_aero_terms(L->flags, L->section_term);
-    L->ready = 1;
+    if (L->speed != 0) list->wind[n++] = &gal_loads_term_mean_wind;
+    if (L->u && L->nt > 1 && L->nx > 0) list->wind[n++] = &gal_loads_term_turbulence;
+    if (L->aero_damping) list->wind[n++] = &gal_loads_term_aero_damping;
+    list->nwind = n;
+    list->nsection = gal_aero_terms(L->flags, list->section);
 }
 
-/* L itself when its lists are made, else a copy in tmp with the lists made from the fields */
-static const gal_loads *ready(const gal_loads *L, gal_loads *tmp)
+/* The wind at (t, x): the along-wind speed (mean wind, turbulence), reversed, along dir. */
+static void wind_at(const gal_loads *L, const gal_loads_list *ls, double t, double x, double w[3])
 {
-    if (L->ready) return L;
-    *tmp = *L;
-    gal_loads_init(tmp);
-    return tmp;
-}
-
-void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
-{
-    gal_loads tmp;
-    L = ready(L, &tmp);
     double ramp = gal_loads_ramp(L, t), U = 0;
-    for (int k = 0; k < L->nwind; k++)   /* the along-wind speed: mean wind, turbulence */
-        if (L->wind_term[k]->speed) U += L->wind_term[k]->speed(L, t, x, ramp);
+    for (int k = 0; k < ls->nwind; k++)
+        if (ls->wind[k]->speed) U += ls->wind[k]->speed(L, t, x, ramp);
     if (L->reverse_time > 0 && t >= L->reverse_time) U = -U;
     for (int k = 0; k < 3; k++) w[k] = U * L->dir[k];
 }
 
-int gal_loads_point(void *ctx, double t, double x, const double r[3], const double rdot[3],
-                    const double tan[3], const double d1[3], double f[3], double *m)
+/* The point load: the relative wind (the wind, then aerodynamic damping), the section's turned
+ * reference direction, the section terms. */
+static int point(const gal_loads *L, const gal_loads_list *ls, double t, double x,
+                 const double rdot[3], const double tan[3], const double d1[3], double f[3], double *m)
 {
-    gal_loads tmp;
-    const gal_loads *L = ready(ctx, &tmp);
-    (void)r;
     double w[3];
-    gal_loads_wind(L, t, x, w);
-    for (int k = 0; k < L->nwind; k++)   /* the relative wind: aerodynamic damping */
-        if (L->wind_term[k]->relative) L->wind_term[k]->relative(L, rdot, w);
+    wind_at(L, ls, t, x, w);
+    for (int k = 0; k < ls->nwind; k++)
+        if (ls->wind[k]->relative) ls->wind[k]->relative(L, rdot, w);
     if (L->attack_angle != 0) {
         /* the section's reference direction turned by -attack_angle about the tangent: the
          * angle of attack, measured from it, grows by attack_angle */
@@ -59,17 +47,35 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
         b[1] = tan[2] * d1[0] - tan[0] * d1[2];
         b[2] = tan[0] * d1[1] - tan[1] * d1[0];
         for (int k = 0; k < 3; k++) d[k] = c * d1[k] - s * b[k];
-        return gal_aero_load_terms(L->table, tan, d, w, L->rho, L->diam, L->section_term,
-                                   L->nsection, f, m, NULL, NULL);
+        return gal_aero_load_terms(L->table, tan, d, w, L->rho, L->diam, ls->section, ls->nsection,
+                                   f, m, NULL, NULL);
     }
-    return gal_aero_load_terms(L->table, tan, d1, w, L->rho, L->diam, L->section_term, L->nsection,
-                               f, m, NULL, NULL);
+    return gal_aero_load_terms(L->table, tan, d1, w, L->rho, L->diam, ls->section, ls->nsection, f,
+                               m, NULL, NULL);
+}
+
+void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
+{
+    gal_loads_list ls;
+    gal_loads_list_make(L, &ls);
+    wind_at(L, &ls, t, x, w);
+}
+
+int gal_loads_point(void *ctx, double t, double x, const double r[3], const double rdot[3],
+                    const double tan[3], const double d1[3], double f[3], double *m)
+{
+    const gal_loads *L = ctx;
+    gal_loads_list ls;
+    (void)r;
+    gal_loads_list_make(L, &ls);
+    return point(L, &ls, t, x, rdot, tan, d1, f, m);
 }
 
 int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f)
 {
-    gal_loads tmp;
-    const gal_loads *L = ready(ctx, &tmp);
+    const gal_loads *L = ctx;
+    gal_loads_list ls;
+    gal_loads_list_make(L, &ls); /* once for all elements */
     const gal_rod *rod = L->rod;
     int nel = rod->p.elements, nn = rod->nn;
     for (int j = 0; j < nel; j++) {
@@ -79,7 +85,7 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
             rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
         }
         gal_rod_material_frame(rod, q, j, tg, d1);
-        int st = gal_loads_point((void *)L, t, r[0], r, rd, tg, d1, fe, &me);
+        int st = point(L, &ls, t, r[0], rd, tg, d1, fe, &me);
         if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
         double l0 = rod->l0[j];
         for (int k = 0; k < 3; k++) {
@@ -101,7 +107,6 @@ int gal_loads_static(gal_rod *rod, double *q, const gal_loads *L, double force_t
     if (!f || !qold || !v) { free(f); free(qold); free(v); return gal_error(GAL_ENOMEM, "out of memory"); }
     gal_loads Ls = *L;
     Ls.u = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0, Ls.rod = rod;
-    gal_loads_init(&Ls);
     double scale = fmax(rod->p.length, 1.0);
     int it;
     for (it = 0; it < max_iter; it++) {

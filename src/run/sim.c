@@ -102,7 +102,6 @@ int gal_sim_setup_init(gal_sim_setup *s, const gal_scene *sc, int need_modes)
         if (st) return st;
         s->wind_time_s = gal_wall_time() - tw;
     }
-    gal_loads_init(L); /* the lists of the load terms that are on */
     /* the start: the sagged equilibrium, or the equilibrium under the mean wind (then the wind
      * blows at full speed from t = 0) */
     s->q_start = malloc((size_t)s->eq.rod->nq * sizeof(double));

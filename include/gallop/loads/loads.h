@@ -4,7 +4,7 @@
  * an along-wind turbulence field interpolated in space and time. The same point load serves the
  * full model (at element centres) and the reduced model (at quadrature points).
  *
- * Each effect is one term; gal_loads_init makes the lists of those that are on:
+ * Each effect is one term; gal_loads_list_make lists those that are on:
  *   the relative wind   mean_wind     src/loads/relwind.c     speed != 0 (ramp, reversal)
  *                       turbulence    src/loads/turbulence.c  a field u (nt > 1, nx > 0)
  *                       aero_damping  src/loads/relwind.c     aero_damping (minus the velocity)
@@ -48,17 +48,19 @@ typedef struct gal_loads {
     const double *u;         /* m/s, row-major by time: u[k * nx + j] */
     /* the rod, for the full model's callback */
     const gal_rod *rod;
-    /* the terms that are on, in order (gal_loads_init) */
-    const gal_loads_term *wind_term[3];
-    int nwind;
-    const gal_aero_term *section_term[3];
-    int nsection;
-    int ready;               /* the lists are made (else each call makes them from the fields) */
 } gal_loads;
 
-/* Make the lists of terms from the fields (call after setting them, and again after changing
- * table, flags, speed, aero_damping or the turbulence field). */
-void gal_loads_init(gal_loads *L);
+/* The terms that are on, in order. Made from the fields of a gal_loads at each evaluation (a few
+ * tests; gal_loads_full makes it once for all elements): gal_loads is a value that callers copy
+ * and change (statics under the mean wind drops the turbulence, the onset sweep sets the speed),
+ * so a list kept inside it could go stale. */
+typedef struct gal_loads_list {
+    const gal_loads_term *wind[3];      /* the relative wind's terms */
+    int nwind;
+    const gal_aero_term *section[3];    /* the section load's terms */
+    int nsection;
+} gal_loads_list;
+void gal_loads_list_make(const gal_loads *L, gal_loads_list *list);
 /* The mean wind's ramp factor at t: (1 - cos(pi t / ramp_time))/2 during the ramp, else 1. */
 double gal_loads_ramp(const gal_loads *L, double t);
 

@@ -22,7 +22,7 @@ struct gal_loads;
 int gal_windfield_params(const gal_scene *sc, gal_wind_params *p);
 
 /* Generate the scene's field and point L's turbulence grid (u, nx, nt, x0, dx, dt) at it; the
- * caller owns *u (free). Then gal_loads_init(L) puts the turbulence term in the list. */
+ * caller owns *u (free). The turbulence term is then in L's list (gal_loads_list_make). */
 int gal_windfield_sample(const gal_scene *sc, struct gal_loads *L, double **u);
 
 #endif
