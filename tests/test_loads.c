@@ -115,10 +115,83 @@ static void test_wind_ramp_reverse_field(void)
     CHECK_NEAR(w[0], 0, 1e-15);
 }
 
+/* An effect that is off is not in the lists; the lists follow the fields (a copy with the
+ * turbulence dropped has no turbulence term). */
+static void test_term_lists(void)
+{
+    double u[6] = {0};
+    gal_loads L = {.flags = GAL_AERO_DRAG | GAL_AERO_MOMENT, .speed = 10, .aero_damping = 1};
+    gal_loads_list ls;
+    gal_loads_list_make(&L, &ls);
+    CHECK(ls.nwind == 2 && ls.wind[0] == &gal_loads_term_mean_wind &&
+          ls.wind[1] == &gal_loads_term_aero_damping, "mean wind, aero damping: %d terms", ls.nwind);
+    CHECK(ls.nsection == 2 && ls.section[0] == &gal_aero_term_drag &&
+          ls.section[1] == &gal_aero_term_moment, "drag, moment: %d terms", ls.nsection);
+    L.u = u, L.nx = 3, L.nt = 2, L.aero_damping = 0, L.flags = GAL_AERO_ALL;
+    gal_loads_list_make(&L, &ls);
+    CHECK(ls.nwind == 2 && ls.wind[1] == &gal_loads_term_turbulence, "turbulence");
+    CHECK(ls.nsection == 3 && strcmp(ls.section[1]->name, "aero_lift") == 0, "all three");
+    gal_loads Ls = L;
+    Ls.u = NULL, Ls.nt = 0;
+    gal_loads_list_make(&Ls, &ls);
+    CHECK(ls.nwind == 1 && ls.wind[0] == &gal_loads_term_mean_wind, "turbulence dropped");
+    gal_loads none = {.dir = {0, 1, 0}};
+    gal_loads_list_make(&none, &ls);
+    CHECK(ls.nwind == 0 && ls.nsection == 0, "no wind, no loads: %d, %d", ls.nwind, ls.nsection);
+}
+
+/* The point load is the sum of its terms: aerodynamic damping is the load in the wind minus the
+ * velocity; each section term's derivative against central differences of its own load. */
+static void test_point_load_terms(void)
+{
+    gal_aero_table *t = gal_aero_table_load("data/aero/iced_d_shape.csv");
+    CHECK(t != NULL, "%s", gal_error_message());
+    if (!t) return;
+    double u[2 * 3] = {0, 1, 2, -1, 0.5, 3};
+    gal_loads L = {.table = t, .flags = GAL_AERO_ALL, .aero_damping = 1, .rho = 1.25, .diam = 0.03,
+                   .attack_angle = 0.2, .speed = 12, .dir = {0, 1, 0}, .ramp_time = 2, .nx = 3,
+                   .nt = 2, .dx = 50, .dt = 1, .u = u};
+    double r[3] = {0}, rd[3] = {0.1, -0.4, 0.7}, tan[3] = {1, 0.05, -0.1}, d1[3] = {0, 1, 0.2};
+    double f0[3], m0, f2[3], m2, w[3];
+    CHECK(gal_loads_point(&L, 1.3, 60, r, rd, tan, d1, f0, &m0) == GAL_OK, "point");
+    /* damping: the load without it, in the wind minus the velocity */
+    gal_loads_wind(&L, 1.3, 60, w);
+    for (int k = 0; k < 3; k++) w[k] -= rd[k];
+    double c = cos(0.2), s = sin(0.2), b[3], d[3];
+    b[0] = tan[1] * d1[2] - tan[2] * d1[1], b[1] = tan[2] * d1[0] - tan[0] * d1[2], b[2] = tan[0] * d1[1] - tan[1] * d1[0];
+    for (int k = 0; k < 3; k++) d[k] = c * d1[k] - s * b[k];
+    gal_aero_load(t, tan, d, w, 1.25, 0.03, GAL_AERO_ALL, f2, &m2);
+    for (int k = 0; k < 3; k++) CHECK_NEAR(f0[k], f2[k], 1e-12 * (1 + fabs(f2[k])));
+    CHECK_NEAR(m0, m2, 1e-12 * (1 + fabs(m2)));
+    /* each section term alone: its derivative against differences of its own load */
+    const gal_aero_term *all[3] = {&gal_aero_term_drag, &gal_aero_term_lift, &gal_aero_term_moment};
+    for (int k = 0; k < 3; k++) {
+        double f[3], m, df[9], dm[3], err = 0, big = 0;
+        gal_aero_load_terms(t, tan, d1, w, 1.25, 0.03, all + k, 1, f, &m, df, dm);
+        for (int j = 0; j < 3; j++) {
+            double wp[3] = {w[0], w[1], w[2]}, wm[3] = {w[0], w[1], w[2]}, fp[3], fm[3], mp, mm, h = 1e-6;
+            wp[j] += h, wm[j] -= h;
+            gal_aero_load_terms(t, tan, d1, wp, 1.25, 0.03, all + k, 1, fp, &mp, NULL, NULL);
+            gal_aero_load_terms(t, tan, d1, wm, 1.25, 0.03, all + k, 1, fm, &mm, NULL, NULL);
+            for (int i = 0; i < 3; i++) {
+                err = fmax(err, fabs((fp[i] - fm[i]) / (2 * h) - df[3 * i + j]));
+                big = fmax(big, fabs(df[3 * i + j]));
+            }
+            err = fmax(err, fabs((mp - mm) / (2 * h) - dm[j]));
+            big = fmax(big, fabs(dm[j]));
+        }
+        CHECK(big > 0 && err <= 1e-6 * big, "%s: derivative error %g of %g", all[k]->name, err, big);
+        printf("    (%s: derivative error %.2g of %.2g)\n", all[k]->name, err, big);
+    }
+    gal_aero_table_free(t);
+}
+
 int main(void)
 {
     RUN(test_blowout_angle);
     RUN(test_den_hartog_damping);
     RUN(test_wind_ramp_reverse_field);
+    RUN(test_term_lists);
+    RUN(test_point_load_terms);
     return CHECK_SUMMARY();
 }

@@ -6,6 +6,8 @@
 
 #include <gsl/gsl_rng.h>
 
+static int ice_next; /* the next random rod carries eccentric ice */
+
 /* A rod on a random 3-D curve near a sagged chord, with random twists. */
 static gal_rod *random_rod(int nel, int torsion, int clamped, double EA, double EI, double **q,
                            gsl_rng *r)
@@ -14,6 +16,7 @@ static gal_rod *random_rod(int nel, int torsion, int clamped, double EA, double 
                         .unstretched_length = 101, .EA = EA, .EI = EI, .GJ = 300,
                         .mass = 1.5, .polar_inertia = 2e-4, .gravity = 9.81,
                         .torsion = torsion, .twist_clamped = clamped};
+    if (ice_next) p.ecc_mass = 0.5, p.ecc = 0.01, p.ecc_angle = 2.5, p.mass += 0.5;
     int nq = 3 * (nel + 1) + (torsion ? nel : 0);
     double *q0 = calloc((size_t)nq, sizeof(double));
     *q = calloc((size_t)nq, sizeof(double));
@@ -148,6 +151,106 @@ static void test_uniform_twist_energy(void)
     gal_rod_free(rod);
 }
 
+/* Energy (and gradient, tangent into K) of term k alone, or of the whole rod with k < 0. */
+static int eval_k(const gal_rod *rod, int k, const double *q, double *U, double *g, gal_csc *K)
+{
+    return k < 0 ? gal_rod_eval(rod, q, U, g, K) : gal_rod_eval_term(rod, k, q, U, g, K);
+}
+
+/* Max errors of the gradient against central differences of the energy (over every entry) and
+ * of the tangent against central differences of the gradient (over the free dofs). */
+static void fd_errors(const gal_rod *rod, int k, double *q, double err[4])
+{
+    int nq = rod->nq, n = rod->ndof;
+    double *g = malloc(nq * sizeof(double)), *gp = malloc(nq * sizeof(double)),
+           *gm = malloc(nq * sizeof(double)), *col = malloc(n * sizeof(double)),
+           *ej = calloc(n, sizeof(double));
+    gal_csc *K = gal_csc_clone(rod->K);
+    double U;
+    CHECK(eval_k(rod, k, q, &U, g, K) == GAL_OK, "eval term %d", k);
+    memset(err, 0, 4 * sizeof(double));
+    for (int i = 0; i < nq; i++) {
+        double h = i < 3 * rod->nn ? 1e-5 : 1e-6, save = q[i], Up, Um;
+        q[i] = save + h; eval_k(rod, k, q, &Up, NULL, NULL);
+        q[i] = save - h; eval_k(rod, k, q, &Um, NULL, NULL);
+        q[i] = save;
+        err[0] = fmax(err[0], fabs((Up - Um) / (2 * h) - g[i]));
+        err[1] = fmax(err[1], fabs(g[i]));
+    }
+    for (int j = 0; j < n; j++) {
+        int i = rod->free_q[j];
+        double h = i < 3 * rod->nn ? 1e-6 : 1e-7, save = q[i];
+        q[i] = save + h; eval_k(rod, k, q, NULL, gp, NULL);
+        q[i] = save - h; eval_k(rod, k, q, NULL, gm, NULL);
+        q[i] = save;
+        ej[j] = 1; gal_csc_symv(K, ej, col); ej[j] = 0;
+        for (int r = 0; r < n; r++) {
+            double fd = (gp[rod->free_q[r]] - gm[rod->free_q[r]]) / (2 * h);
+            err[2] = fmax(err[2], fabs(fd - col[r]));
+            err[3] = fmax(err[3], fabs(col[r]));
+        }
+    }
+    free(g); free(gp); free(gm); free(col); free(ej);
+    gal_csc_free(K);
+}
+
+/* Every term on, on a curved and twisted configuration: each term's gradient against finite
+ * differences of its own energy, its tangent against finite differences of its gradient, and the
+ * terms sum to the whole. */
+static void test_derivatives_per_term(void)
+{
+    static const char *const want[] = {"extension", "bending", "torsion", "torsion_clamps",
+                                       "ice_eccentricity", "gravity"};
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(r, 11);
+    double *q;
+    ice_next = 1;
+    gal_rod *rod = random_rod(12, 1, 1, 1.0, 50.0, &q, r);
+    ice_next = 0;
+    CHECK(rod && rod->nterm == 6, "six terms expected, %d", rod ? rod->nterm : -1);
+    if (!rod || rod->nterm != 6) return;
+    double Usum = 0, U;
+    for (int k = 0; k < rod->nterm; k++) {
+        CHECK(strcmp(rod->term[k]->name, want[k]) == 0, "term %d is %s, %s expected", k,
+              rod->term[k]->name, want[k]);
+        double e[4];
+        fd_errors(rod, k, q, e);
+        CHECK(e[0] <= 1e-6 * e[1], "%s: gradient vs FD of its energy: error %g of %g",
+              rod->term[k]->name, e[0], e[1]);
+        CHECK(e[2] <= 1e-5 * e[3], "%s: tangent vs FD of its gradient: error %g of %g",
+              rod->term[k]->name, e[2], e[3]);
+        printf("    (%s: force error %.2g of %.2g, tangent error %.2g of %.2g)\n",
+               rod->term[k]->name, e[0], e[1], e[2], e[3]);
+        gal_rod_eval_term(rod, k, q, &U, NULL, NULL);
+        Usum += U;
+    }
+    gal_rod_eval(rod, q, &U, NULL, NULL);
+    CHECK_REL(Usum, U, 1e-12);
+    CHECK(gal_rod_eval_term(rod, 6, q, &U, NULL, NULL) == GAL_EINPUT, "term out of range");
+    free(q);
+    gal_rod_free(rod);
+    gsl_rng_free(r);
+}
+
+/* An effect that is off is not in the list: a cable (no bending, no torsion, no gravity) has the
+ * extension alone; a free twist has no clamp term. */
+static void test_term_list(void)
+{
+    gal_rod_params p = {.length = 10, .elements = 4, .unstretched_length = 10, .EA = 1e6,
+                        .mass = 1, .polar_inertia = 1e-4, .GJ = 1};
+    double q[15 + 4] = {0};
+    for (int i = 0; i <= 4; i++) q[3 * i] = 2.5 * i;
+    gal_rod *rod = gal_rod_alloc(&p, q);
+    CHECK(rod && rod->nterm == 1 && rod->term[0] == &gal_rod_term_extension, "extension alone");
+    gal_rod_free(rod);
+    p.torsion = 1, p.gravity = 9.81, p.ecc_mass = 0.1, p.ecc = 0.01;
+    rod = gal_rod_alloc(&p, q);
+    CHECK(rod && rod->nterm == 4 && rod->term[1] == &gal_rod_term_torsion &&
+          rod->term[2] == &gal_rod_term_ice && rod->term[3] == &gal_rod_term_gravity,
+          "extension, torsion (free ends), ice, gravity");
+    gal_rod_free(rod);
+}
+
 int main(void)
 {
     RUN(test_derivatives_bending_torsion);
@@ -158,5 +261,7 @@ int main(void)
     RUN(test_derivatives_cable);
     RUN(test_rigid_rotation_invariance);
     RUN(test_uniform_twist_energy);
+    RUN(test_derivatives_per_term);
+    RUN(test_term_list);
     return CHECK_SUMMARY();
 }

@@ -1,4 +1,6 @@
-/* loads.c: quasi-steady aerodynamic loads in a ramped, turbulent, possibly reversing wind. */
+/* loads.c: quasi-steady aerodynamic loads in a ramped, turbulent, possibly reversing wind: the
+ * lists of the terms that are on (loads.h), the point load as their sum (the relative wind, then
+ * the section load), the full model's generalized forces and the statics under the mean wind. */
 #include "gallop/loads/loads.h"
 #include "gallop/base/core.h"
 
@@ -8,43 +10,35 @@
 
 #include "gallop/statics/statics.h"
 
-void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
+void gal_loads_list_make(const gal_loads *L, gal_loads_list *list)
 {
-    double U = L->speed;
-    if (L->ramp_time > 0 && t < L->ramp_time) U *= 0.5 * (1 - cos(GAL_PI * t / L->ramp_time));
-    if (L->u && L->nt > 1 && L->nx > 0) {
-        /* bilinear in (t, x); the field repeats after its duration */
-        double ft = t / L->dt, period = (double)(L->nt - 1);
-        ft = fmod(ft, period);
-        if (ft < 0) ft += period;
-        int k = (int)ft;
-        if (k >= L->nt - 1) k = L->nt - 2;
-        double a = ft - k;
-        double fx = L->nx > 1 ? (x - L->x0) / L->dx : 0;
-        if (fx < 0) fx = 0;
-        if (fx > L->nx - 1) fx = L->nx - 1;
-        int j = (int)fx;
-        if (j >= L->nx - 1) j = L->nx > 1 ? L->nx - 2 : 0;
-        double b = L->nx > 1 ? fx - j : 0;
-        const double *u0 = L->u + (size_t)k * L->nx, *u1 = u0 + L->nx;
-        int j1 = L->nx > 1 ? j + 1 : j;
-        double u = (1 - a) * ((1 - b) * u0[j] + b * u0[j1]) + a * ((1 - b) * u1[j] + b * u1[j1]);
-        double ramp = (L->ramp_time > 0 && t < L->ramp_time) ? 0.5 * (1 - cos(GAL_PI * t / L->ramp_time)) : 1.0;
-        U += ramp * u;
-    }
+    int n = 0;
+    if (L->speed != 0) list->wind[n++] = &gal_loads_term_mean_wind;
+    if (L->u && L->nt > 1 && L->nx > 0) list->wind[n++] = &gal_loads_term_turbulence;
+    if (L->aero_damping) list->wind[n++] = &gal_loads_term_aero_damping;
+    list->nwind = n;
+    list->nsection = gal_aero_terms(L->flags, list->section);
+}
+
+/* The wind at (t, x): the along-wind speed (mean wind, turbulence), reversed, along dir. */
+static void wind_at(const gal_loads *L, const gal_loads_list *ls, double t, double x, double w[3])
+{
+    double ramp = gal_loads_ramp(L, t), U = 0;
+    for (int k = 0; k < ls->nwind; k++)
+        if (ls->wind[k]->speed) U += ls->wind[k]->speed(L, t, x, ramp);
     if (L->reverse_time > 0 && t >= L->reverse_time) U = -U;
     for (int k = 0; k < 3; k++) w[k] = U * L->dir[k];
 }
 
-int gal_loads_point(void *ctx, double t, double x, const double r[3], const double rdot[3],
-                    const double tan[3], const double d1[3], double f[3], double *m)
+/* The point load: the relative wind (the wind, then aerodynamic damping), the section's turned
+ * reference direction, the section terms. */
+static int point(const gal_loads *L, const gal_loads_list *ls, double t, double x,
+                 const double rdot[3], const double tan[3], const double d1[3], double f[3], double *m)
 {
-    const gal_loads *L = ctx;
-    (void)r;
     double w[3];
-    gal_loads_wind(L, t, x, w);
-    if (L->aero_damping)
-        for (int k = 0; k < 3; k++) w[k] -= rdot[k];
+    wind_at(L, ls, t, x, w);
+    for (int k = 0; k < ls->nwind; k++)
+        if (ls->wind[k]->relative) ls->wind[k]->relative(L, rdot, w);
     if (L->attack_angle != 0) {
         /* the section's reference direction turned by -attack_angle about the tangent: the
          * angle of attack, measured from it, grows by attack_angle */
@@ -53,14 +47,35 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
         b[1] = tan[2] * d1[0] - tan[0] * d1[2];
         b[2] = tan[0] * d1[1] - tan[1] * d1[0];
         for (int k = 0; k < 3; k++) d[k] = c * d1[k] - s * b[k];
-        return gal_aero_load(L->table, tan, d, w, L->rho, L->diam, L->flags, f, m);
+        return gal_aero_load_terms(L->table, tan, d, w, L->rho, L->diam, ls->section, ls->nsection,
+                                   f, m, NULL, NULL);
     }
-    return gal_aero_load(L->table, tan, d1, w, L->rho, L->diam, L->flags, f, m);
+    return gal_aero_load_terms(L->table, tan, d1, w, L->rho, L->diam, ls->section, ls->nsection, f,
+                               m, NULL, NULL);
+}
+
+void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
+{
+    gal_loads_list ls;
+    gal_loads_list_make(L, &ls);
+    wind_at(L, &ls, t, x, w);
+}
+
+int gal_loads_point(void *ctx, double t, double x, const double r[3], const double rdot[3],
+                    const double tan[3], const double d1[3], double f[3], double *m)
+{
+    const gal_loads *L = ctx;
+    gal_loads_list ls;
+    (void)r;
+    gal_loads_list_make(L, &ls);
+    return point(L, &ls, t, x, rdot, tan, d1, f, m);
 }
 
 int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f)
 {
     const gal_loads *L = ctx;
+    gal_loads_list ls;
+    gal_loads_list_make(L, &ls); /* once for all elements */
     const gal_rod *rod = L->rod;
     int nel = rod->p.elements, nn = rod->nn;
     for (int j = 0; j < nel; j++) {
@@ -70,7 +85,7 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
             rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
         }
         gal_rod_material_frame(rod, q, j, tg, d1);
-        int st = gal_loads_point(ctx, t, r[0], r, rd, tg, d1, fe, &me);
+        int st = point(L, &ls, t, r[0], rd, tg, d1, fe, &me);
         if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
         double l0 = rod->l0[j];
         for (int k = 0; k < 3; k++) {

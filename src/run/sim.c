@@ -13,7 +13,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "gallop/loads/wind.h"
 #include "gallop/loads/windfield.h"
 
 void gal_sim_result_clear(gal_sim_result *res)
@@ -47,23 +46,7 @@ static void rayleigh(double zeta, double w1, double w2, double *a, double *b)
  * 20 Hz or finer, for the run's duration: the same field for both models. */
 static int wind_field(gal_sim_setup *s)
 {
-    const gal_scene *sc = s->sc;
-    gal_wind_params wp;
-    int st = gal_windfield_params(sc, &wp); /* the same field as `gallop wind` */
-    if (st) return st;
-    gal_wind *w = gal_wind_alloc(&wp);
-    if (!w) return gal_error(GAL_EINPUT, "%s: [wind]: %s", sc->path, gal_error_message());
-    st = gal_wind_generate(w);
-    if (st) { gal_wind_free(w); return st; }
-    int nx = gal_wind_points(w), nt = gal_wind_samples(w);
-    s->wind_u = malloc((size_t)nx * nt * sizeof(double));
-    if (!s->wind_u) { gal_wind_free(w); return gal_error(GAL_ENOMEM, "out of memory for the wind field"); }
-    for (int k = 0; k < nt; k++)
-        for (int j = 0; j < nx; j++) s->wind_u[(size_t)k * nx + j] = gal_wind_u(w, j, k);
-    gal_loads *L = &s->loads;
-    L->u = s->wind_u, L->nx = nx, L->nt = nt, L->x0 = 0, L->dx = gal_wind_spacing(w), L->dt = gal_wind_time_step(w);
-    gal_wind_free(w);
-    return GAL_OK;
+    return gal_windfield_sample(s->sc, &s->loads, &s->wind_u);
 }
 
 int gal_sim_setup_init(gal_sim_setup *s, const gal_scene *sc, int need_modes)

@@ -97,6 +97,39 @@ int gal_aero_load_deriv(const gal_aero_table *t, const double tan[3], const doub
                         const double wrel[3], double rho, double diam, unsigned flags,
                         double f[3], double *m, double df[9], double dm[3]);
 
+/* ---- The section load as a list of terms (drag, lift, moment) ----
+ * The flow at a section, which every term reads: */
+typedef struct gal_aero_flow {
+    double e3[3];          /* unit tangent */
+    double V;              /* m/s, speed of the relative wind's part normal to the tangent */
+    double wh[3], lh[3];   /* its direction w^ and the lift direction l^ = e3 x w^ */
+    double c[3], dc[3];    /* C_D, C_L, C_M at the angle of attack, and d/dalpha (per radian) */
+} gal_aero_flow;
+
+/* What the terms add up to: f = q V^2 g (N/m) and m = q d V^2 cm (N m/m), q = rho d / 2; with the
+ * derivative, df = q V G (G row-major, d/dwrel) and dm = q d V Gm. */
+typedef struct gal_aero_sum {
+    double g[3], cm, G[9], Gm[3];
+} gal_aero_sum;
+
+/* One term of the section load: `add` adds its coefficient to s->g or s->cm and, with deriv, its
+ * part of s->G or s->Gm. */
+typedef struct gal_aero_term {
+    const char *name;   /* the scene's effect: "aero_drag", "aero_lift", "aero_moment" */
+    unsigned flag;      /* GAL_AERO_DRAG, GAL_AERO_LIFT or GAL_AERO_MOMENT */
+    void (*add)(const gal_aero_flow *fl, int deriv, gal_aero_sum *s);
+} gal_aero_term;
+extern const gal_aero_term gal_aero_term_drag, gal_aero_term_lift, gal_aero_term_moment;
+
+/* The terms that `flags` selects, in the order drag, lift, moment, into list; returns how many. */
+int gal_aero_terms(unsigned flags, const gal_aero_term *list[3]);
+
+/* gal_aero_load_deriv summed over the given terms (nterms of them) instead of flags. */
+int gal_aero_load_terms(const gal_aero_table *t, const double tan[3], const double d1[3],
+                        const double wrel[3], double rho, double diam,
+                        const gal_aero_term *const *terms, int nterms, double f[3], double *m,
+                        double df[9], double dm[3]);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,9 +1,14 @@
 /* loads.h: the aerodynamic loads of a scene (paper Eq. 10; DESIGN.md "Aerodynamics", "Wind"):
  * quasi-steady drag, lift and moment per unit length from a coefficient table, in the relative
  * wind (wind minus conductor velocity when aero_damping is on), with the mean wind ramped in and
- * an along-wind turbulence field interpolated in space and time. Only the effects the scene asks
- * for are evaluated. The same point load serves the full model (at element centres) and the
- * reduced model (at quadrature points). */
+ * an along-wind turbulence field interpolated in space and time. The same point load serves the
+ * full model (at element centres) and the reduced model (at quadrature points).
+ *
+ * Each effect is one term; gal_loads_list_make lists those that are on:
+ *   the relative wind   mean_wind     src/loads/relwind.c     speed != 0 (ramp, reversal)
+ *                       turbulence    src/loads/turbulence.c  a field u (nt > 1, nx > 0)
+ *                       aero_damping  src/loads/relwind.c     aero_damping (minus the velocity)
+ *   the section load    aero_drag, aero_lift, aero_moment  src/loads/section.c  by flags */
 #ifndef GALLOP_LOADS_H
 #define GALLOP_LOADS_H
 
@@ -15,6 +20,20 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+struct gal_loads;
+
+/* A term of the relative wind at a section, in one of two forms:
+ *   speed:    its part of the along-wind speed (m/s) at time t (s) and span position x (m),
+ *             before the wind's reversal; ramp is the mean wind's ramp factor at t (0..1);
+ *   relative: a change of the relative wind w (m/s) of a section moving at rdot (m/s). */
+typedef struct gal_loads_term {
+    const char *name;   /* "mean_wind", or the scene's effect: "turbulence", "aero_damping" */
+    double (*speed)(const struct gal_loads *L, double t, double x, double ramp);
+    void (*relative)(const struct gal_loads *L, const double rdot[3], double w[3]);
+} gal_loads_term;
+extern const gal_loads_term gal_loads_term_mean_wind, gal_loads_term_turbulence,
+    gal_loads_term_aero_damping;
 
 typedef struct gal_loads {
     const gal_aero_table *table;
@@ -34,6 +53,20 @@ typedef struct gal_loads {
     /* the rod, for the full model's callback */
     const gal_rod *rod;
 } gal_loads;
+
+/* The terms that are on, in order. Made from the fields of a gal_loads at each evaluation (a few
+ * tests; gal_loads_full makes it once for all elements): gal_loads is a value that callers copy
+ * and change (statics under the mean wind drops the turbulence, the onset sweep sets the speed),
+ * so a list kept inside it could go stale. */
+typedef struct gal_loads_list {
+    const gal_loads_term *wind[3];      /* the relative wind's terms */
+    int nwind;
+    const gal_aero_term *section[3];    /* the section load's terms */
+    int nsection;
+} gal_loads_list;
+void gal_loads_list_make(const gal_loads *L, gal_loads_list *list);
+/* The mean wind's ramp factor at t: (1 - cos(pi t / ramp_time))/2 during the ramp, else 1. */
+double gal_loads_ramp(const gal_loads *L, double t);
 
 /* Wind velocity at (t, x) (m/s, 3-vector). */
 void gal_loads_wind(const gal_loads *L, double t, double x, double w[3]);

@@ -1,7 +1,7 @@
-/* windfield.h: the turbulent wind field of a scene (DESIGN.md "Wind"): the parameters of the
- * spectral-representation generator (wind.h) that a scene's [wind], [span] and [simulation]
- * sections call for, in one place, so that `gallop simulate`, `gallop compare` and `gallop wind`
- * make the same field from the same scene. */
+/* windfield.h: the turbulent wind field of a scene (DESIGN.md "Wind"; src/loads/turbulence.c):
+ * the parameters of the spectral-representation generator (wind.h) that a scene's [wind], [span]
+ * and [simulation] sections call for, in one place, so that `gallop simulate`, `gallop compare`
+ * and `gallop wind` make the same field from the same scene; and that field on the loads' grid. */
 #ifndef GALLOP_WINDFIELD_H
 #define GALLOP_WINDFIELD_H
 
@@ -11,6 +11,8 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+struct gal_loads;
 
 #define GAL_WINDFIELD_POINTS 65       /* points along the span, supports included */
 #define GAL_WINDFIELD_TIME_STEP 0.05  /* s: 20 Hz */
@@ -22,6 +24,10 @@ extern "C" {
  * other fields take gal_wind_params_default's values. The parameters are not validated here
  * (gal_wind_alloc does it). GAL_EINPUT with a message when [wind] turbulence is none. */
 int gal_windfield_params(const gal_scene *sc, gal_wind_params *p);
+
+/* Generate the scene's field and point L's turbulence grid (u, nx, nt, x0, dx, dt) at it; the
+ * caller owns *u (free). The turbulence term is then in L's list (gal_loads_list_make). */
+int gal_windfield_sample(const gal_scene *sc, struct gal_loads *L, double **u);
 
 #ifdef __cplusplus
 }

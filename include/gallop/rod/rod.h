@@ -9,7 +9,12 @@
  *     + GJ (theta_0^2 / l0_0 + theta_{n-1}^2 / l0_{n-1})      clamped twist at the supports
  *     + sum_i m_i g z_i                                     gravity
  * with kb_i = 2 t_{i-1} x t_i / (1 + t_{i-1} . t_i), lbar_i = l0_{i-1} + l0_i and mref_i the
- * reference twist. The unloaded conductor is straight and untwisted (kbar = 0, twist bar = 0). */
+ * reference twist. The unloaded conductor is straight and untwisted (kbar = 0, twist bar = 0).
+ * Eccentric ice adds the weight of its offset centre, sum_j m_i g e l0_j c_z(theta_j), and
+ * couples twist and translation in the mass matrix.
+ *
+ * Each effect is one term (gal_rod_term, one file of src/rod/ each); the rod holds the list of
+ * the terms that are on, made when it is allocated, and gal_rod_eval sums over it. */
 #ifndef GALLOP_ROD_H
 #define GALLOP_ROD_H
 
@@ -43,6 +48,36 @@ typedef struct gal_rod_params {
     double ecc_angle;
 } gal_rod_params;
 
+struct gal_rod;
+struct gal_rod_node; /* the geometry of the two edges at an interior node (src/rod/rod_impl.h) */
+
+/* One term of the rod's energy, in one of two forms:
+ *   eval: adds the term's energy (J) to *U, its gradient to grad (over the full configuration;
+ *         may be NULL) and its tangent to K->val (the free dofs, on the pattern of rod->K; may be
+ *         NULL); GAL_EFAIL with a message on a degenerate configuration;
+ *   node: a term of the node stencil at interior node i (bending, torsion): returns its energy
+ *         there and adds its gradient to g (8) and Hessian to H (8 x 8; may be NULL) over the
+ *         stencil's edge variables e0 = x_i - x_{i-1}, e1 = x_{i+1} - x_i, theta_{i-1}, theta_i.
+ *         The node terms that follow each other in the list share one pass over the nodes: the
+ *         geometry is computed once per node and their sum assembled once. */
+typedef struct gal_rod_term {
+    const char *name;   /* the scene's effect: "extension", "bending", ... */
+    int (*eval)(const struct gal_rod *rod, const double *q, double *U, double *grad, gal_csc *K);
+    double (*node)(const struct gal_rod *rod, int i, const double *q, const struct gal_rod_node *nd,
+                   double *g, double (*H)[8]);
+} gal_rod_term;
+
+/* The terms, in the order gal_rod_eval sums them; each is in the list only when it is on:
+ *   extension        src/rod/extension.c  always (EA > 0)
+ *   bending          src/rod/bending.c    EI > 0 (node)
+ *   torsion          src/rod/torsion.c    torsion on (node)
+ *   torsion_clamps   src/rod/torsion.c    torsion on and twist_clamped: the twist held at the supports
+ *   ice_eccentricity src/rod/ice.c        eccentric ice (ecc_mass > 0, ecc != 0, torsion) and gravity
+ *   gravity          src/rod/gravity.c    gravity != 0 */
+extern const gal_rod_term gal_rod_term_extension, gal_rod_term_bending, gal_rod_term_torsion,
+    gal_rod_term_torsion_clamps, gal_rod_term_ice, gal_rod_term_gravity;
+#define GAL_ROD_MAX_TERMS 8
+
 /* The immutable model of a discretized span. The full configuration q holds 3 (elements + 1)
  * node positions (m) followed, when torsion is on, by `elements` twist angles (rad). */
 typedef struct gal_rod {
@@ -65,6 +100,8 @@ typedef struct gal_rod {
     double *mdiag;      /* ndof: the diagonal of M (the whole of it without eccentric ice) */
     int *slot_node;     /* per interior node: 11 x 11 map local dof pair -> K value index, or -1 */
     int *slot_edge;     /* per edge: 6 x 6 map */
+    const gal_rod_term *term[GAL_ROD_MAX_TERMS]; /* the effects that are on, in summation order */
+    int nterm;
 } gal_rod;
 
 /* Build the model; the reference geometry q0 (nq entries; positions, twists) sets the reference
@@ -78,6 +115,9 @@ gal_rod *gal_rod_free(gal_rod *rod);
  * `grad` and `K` may be NULL. Returns GAL_OK, or GAL_EFAIL on a degenerate configuration
  * (zero-length or folded-back element). */
 int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *grad, gal_csc *K);
+/* The same for rod->term[k] alone (0 <= k < rod->nterm; GAL_EINPUT otherwise). */
+int gal_rod_eval_term(const gal_rod *rod, int k, const double *q, double *energy, double *grad,
+                      gal_csc *K);
 
 /* Copy free entries of a configuration-sized vector to/from a dof-sized vector. */
 void gal_rod_gather(const gal_rod *rod, const double *full, double *free_part);

@@ -1,0 +1,201 @@
+/* table.c: aerodynamic coefficient tables (DESIGN.md "Aerodynamics"; the file format and the
+ * angle convention are stated in include/gallop/loads/aero.h): the checks of the rows, the
+ * periodic closure, the periodic cubic splines (GSL) and their evaluation. */
+#include "aero_impl.h"
+#include "gallop/base/core.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_interp.h>
+
+#define DEG (GAL_PI / 180.0)
+#define CLOSE_TOL 1e-9      /* periodic closure: last row = first row + 360 within this */
+#define MIN_STEP_DEG 1e-6   /* two angles closer than this are treated as duplicates */
+#define MAX_ALPHA_DEG 720.0 /* |alpha_deg| allowed */
+
+const char *const gal_aero_coef_name[3] = {"cd", "cl", "cm"};
+
+static char *dupstr(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *p = malloc(n);
+    if (p) memcpy(p, s, n);
+    return p;
+}
+
+gal_aero_table *gal_aero_table_free(gal_aero_table *t)
+{
+    if (!t) return NULL;
+    for (int i = 0; i < 3; i++) {
+        if (t->spline[i]) gsl_interp_free(t->spline[i]);
+        free(t->c[i]);
+    }
+    free(t->alpha);
+    free(t->path);
+    free(t->source);
+    free(t);
+    return NULL;
+}
+
+/* Where a row came from, for messages: "file:line" (line[r] > 0) or "name: row r". */
+static void where(char *buf, size_t sz, const char *name, const int *line, int r)
+{
+    if (line) snprintf(buf, sz, "%s:%d", name, line[r]);
+    else snprintf(buf, sz, "%s: row %d", name, r + 1);
+}
+
+/* The rows: every value finite and in range, the angles strictly increasing. */
+static int check_rows(const char *name, int rows, const double *adeg, const double *const cv[3],
+                      const int *line, const int *col)
+{
+    char at[1200];
+    for (int r = 0; r < rows; r++) {
+        where(at, sizeof at, name, line, r);
+        if (!isfinite(adeg[r]) || fabs(adeg[r]) > MAX_ALPHA_DEG)
+            return gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %g out of range: finite, within [-%g, %g]",
+                             at, col ? col[4 * r] : 1, adeg[r], MAX_ALPHA_DEG, MAX_ALPHA_DEG);
+        for (int i = 0; i < 3; i++)
+            if (!isfinite(cv[i][r]) || fabs(cv[i][r]) > GAL_AERO_MAX_COEF)
+                return gal_error(GAL_EINPUT, "%s:%d: %s = %g out of range: finite, within [-%g, %g]",
+                                 at, col ? col[4 * r + 1 + i] : 2 + i, gal_aero_coef_name[i],
+                                 cv[i][r], GAL_AERO_MAX_COEF, GAL_AERO_MAX_COEF);
+        if (r > 0 && !(adeg[r] > adeg[r - 1] + MIN_STEP_DEG))
+            return gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %.17g %s the previous row's %.17g: angles "
+                             "must be strictly increasing (steps > %g deg)", at,
+                             col ? col[4 * r] : 1, adeg[r],
+                             fabs(adeg[r] - adeg[r - 1]) <= MIN_STEP_DEG ? "duplicates" : "is below",
+                             adeg[r - 1], MIN_STEP_DEG);
+    }
+    if (rows < 4)
+        return gal_error(GAL_EINPUT, "%s: %d data rows, at least 4 angles are needed", name, rows);
+    return GAL_OK;
+}
+
+/* The period: the closure row is given (the rows span 360 deg: *given = 1) or added (span < 360). */
+static int check_period(const char *name, int rows, const double *adeg, const double *const cv[3],
+                        const int *line, const int *col, int *given)
+{
+    char at[1200];
+    double span = adeg[rows - 1] - adeg[0];
+    *given = 0;
+    where(at, sizeof at, name, line, rows - 1);
+    if (span > 360.0 + CLOSE_TOL)
+        return gal_error(GAL_EINPUT, "%s:%d: alpha_deg = %g: the rows span %g deg, more than one "
+                         "period (allowed: less than 360, or exactly 360 with the last row equal to "
+                         "the first)", at, col ? col[4 * (rows - 1)] : 1, adeg[rows - 1], span);
+    if (span < 360.0 - CLOSE_TOL) return GAL_OK;
+    *given = 1;
+    for (int i = 0; i < 3; i++)
+        if (fabs(cv[i][rows - 1] - cv[i][0]) > CLOSE_TOL)
+            return gal_error(GAL_EINPUT, "%s:%d: %s = %.17g at alpha_first + 360 must equal the "
+                             "first row's %.17g (periodic closure, within %g)", at,
+                             col ? col[4 * (rows - 1) + 1 + i] : 2 + i, gal_aero_coef_name[i],
+                             cv[i][rows - 1], cv[i][0], CLOSE_TOL);
+    if (rows - 1 < 4)
+        return gal_error(GAL_EINPUT, "%s: %d distinct angles (the last row closes the period), at "
+                         "least 4 are needed", name, rows - 1);
+    return GAL_OK;
+}
+
+/* The table over nd distinct angles plus the closure alpha[0] + 2 pi, with its periodic splines. */
+static gal_aero_table *splines(const char *name, const char *source, int nd, const double *adeg,
+                               const double *const cv[3], int *status)
+{
+    int n = nd + 1; /* nodes with the closure */
+    gal_aero_table *t = calloc(1, sizeof *t);
+    if (!t) goto nomem;
+    t->n = n;
+    t->path = dupstr(name);
+    t->source = dupstr(source);
+    t->alpha = malloc(n * sizeof(double));
+    if (!t->path || !t->source || !t->alpha) goto nomem;
+    for (int k = 0; k < nd; k++) t->alpha[k] = adeg[k] * DEG;
+    t->alpha[nd] = t->alpha[0] + 2.0 * GAL_PI;
+    *status = GAL_EINPUT;
+    for (int i = 0; i < 3; i++) {
+        t->c[i] = malloc(n * sizeof(double));
+        if (!t->c[i]) goto nomem;
+        for (int k = 0; k < nd; k++) t->c[i][k] = cv[i][k];
+        t->c[i][nd] = cv[i][0]; /* exact closure for the periodic spline */
+        gsl_interp *s = gsl_interp_alloc(gsl_interp_cspline_periodic, n);
+        if (!s) goto nomem;
+        t->spline[i] = s;
+        if (gsl_interp_init(s, t->alpha, t->c[i], n) != 0) {
+            gal_error(GAL_EINPUT, "%s: the periodic spline of %s could not be built", name,
+                      gal_aero_coef_name[i]);
+            return gal_aero_table_free(t);
+        }
+    }
+    *status = GAL_OK;
+    return t;
+nomem:
+    *status = gal_error(GAL_ENOMEM, "%s: out of memory building the aerodynamic table", name);
+    return gal_aero_table_free(t);
+}
+
+gal_aero_table *gal_aero_table_build(const char *name, const char *source, int rows,
+                                     const double *adeg, const double *cd, const double *cl,
+                                     const double *cm, const int *line, const int *col, int *status)
+{
+    const double *const cv[3] = {cd, cl, cm};
+    int given;
+    *status = GAL_EINPUT;
+    if (!source || !source[0]) {
+        gal_error(GAL_EINPUT, "%s: no '# source:' comment line: every table must say where its "
+                  "numbers come from", name);
+        return NULL;
+    }
+    if (check_rows(name, rows, adeg, cv, line, col) != GAL_OK ||
+        check_period(name, rows, adeg, cv, line, col, &given) != GAL_OK)
+        return NULL;
+    return splines(name, source, given ? rows - 1 : rows, adeg, cv, status);
+}
+
+gal_aero_table *gal_aero_table_make(const char *name, const char *source, int n,
+                                    const double *alpha_deg, const double *cd, const double *cl,
+                                    const double *cm)
+{
+    if (!name) name = "(table)";
+    if (!alpha_deg || !cd || !cl || !cm || n < 0) {
+        gal_error(GAL_EINPUT, "%s: missing arrays", name);
+        return NULL;
+    }
+    int st;
+    return gal_aero_table_build(name, source, n, alpha_deg, cd, cl, cm, NULL, NULL, &st);
+}
+
+/* ------------------------------------------------------------------------------------------ */
+/* evaluation                                                                                  */
+/* ------------------------------------------------------------------------------------------ */
+
+void gal_aero_eval(const gal_aero_table *t, double alpha, double c[3], double dc[3])
+{
+    if (!isfinite(alpha)) {
+        for (int i = 0; i < 3; i++) {
+            c[i] = NAN;
+            if (dc) dc[i] = NAN;
+        }
+        return;
+    }
+    const double a0 = t->alpha[0], a1 = t->alpha[t->n - 1], P = 2.0 * GAL_PI;
+    double x = alpha - a0;
+    x -= P * floor(x / P);          /* x in [0, P) up to rounding */
+    x += a0;
+    if (x < a0) x = a0;
+    if (x > a1) x = a1;             /* the spline's domain, exactly */
+    for (int i = 0; i < 3; i++) {   /* NULL accelerator: the table stays const, thread-safe */
+        c[i] = gsl_interp_eval(t->spline[i], t->alpha, t->c[i], x, NULL);
+        if (dc) dc[i] = gsl_interp_eval_deriv(t->spline[i], t->alpha, t->c[i], x, NULL);
+    }
+}
+
+double gal_aero_den_hartog(const gal_aero_table *t, double alpha)
+{
+    double c[3], dc[3];
+    gal_aero_eval(t, alpha, c, dc);
+    return dc[1] + c[0]; /* H = dC_L/dalpha + C_D */
+}
+

@@ -1,0 +1,55 @@
+/* frames.c: the rod's material frames: reference directors carried to the current tangents by
+ * parallel transport (the minimal rotation), turned by the twist. */
+#include "gallop/base/core.h"
+#include "rod_impl.h"
+#include "gallop/base/vec3.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Parallel transport of a (normal to tb) from unit tangent tb to unit tangent t. */
+void gal_rod_transport(const double *tb, const double *a, const double *t, double *r)
+{
+    double f = gal_dot3(t, a) / (1.0 + gal_dot3(tb, t));
+    for (int k = 0; k < 3; k++) r[k] = a[k] - f * (tb[k] + t[k]);
+}
+
+void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3])
+{
+    double e[3], a[3];
+    for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
+    double le = gal_norm3(e);
+    for (int k = 0; k < 3; k++) t[k] = e[k] / le;
+    gal_rod_transport(rod->tbar + 3 * j, rod->abar + 3 * j, t, a);
+    double th = rod->p.torsion ? q[3 * rod->nn + j] : 0.0, b[3];
+    gal_cross3(t, a, b);
+    for (int k = 0; k < 3; k++) d1[k] = cos(th) * a[k] + sin(th) * b[k];
+}
+
+int gal_rod_frames_init(gal_rod *rod, const double *q0)
+{
+    int nel = rod->p.elements;
+    for (int j = 0; j < nel; j++) {
+        /* reference frame: unit tangent of q0 and a first director normal to it, chosen as the
+         * horizontal normal y carried into the plane normal to the tangent */
+        double *t = rod->tbar + 3 * j, *a = rod->abar + 3 * j;
+        for (int k = 0; k < 3; k++) t[k] = q0[3 * (j + 1) + k] - q0[3 * j + k];
+        double le = gal_norm3(t);
+        if (!(le > 0)) {
+            gal_error(GAL_EINPUT, "rod: element %d of the reference geometry has zero length", j);
+            return GAL_EINPUT;
+        }
+        for (int k = 0; k < 3; k++) t[k] /= le;
+        double y[3] = {0, 1, 0}, ty = gal_dot3(t, y);
+        for (int k = 0; k < 3; k++) a[k] = y[k] - ty * t[k];
+        double na = gal_norm3(a);
+        if (na < 1e-6) { /* tangent along y: fall back to z */
+            double z[3] = {0, 0, 1}, tz = gal_dot3(t, z);
+            for (int k = 0; k < 3; k++) a[k] = z[k] - tz * t[k];
+            na = gal_norm3(a);
+        }
+        for (int k = 0; k < 3; k++) a[k] /= na;
+    }
+    return GAL_OK;
+}

@@ -1,0 +1,86 @@
+/* node.c: the node stencil that bending and torsion share: the geometry of the two edges at an
+ * interior node (with the fold-back check), and one pass over the nodes that sums the node terms'
+ * energies, gradients and Hessians, given over the edge variables e0 = x_i - x_{i-1},
+ * e1 = x_{i+1} - x_i, theta_{i-1}, theta_i, and assembles them into the configuration's gradient
+ * and the tangent's values. */
+#include "gallop/base/core.h"
+#include "rod_impl.h"
+#include "gallop/base/vec3.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Fill nd; GAL_EFAIL with a message when the rod folds back on itself at node i. */
+static int geometry(const gal_rod *rod, int i, const double *q, gal_rod_node *nd)
+{
+    for (int k = 0; k < 3; k++) {
+        nd->e0[k] = q[3 * i + k] - q[3 * (i - 1) + k];
+        nd->e1[k] = q[3 * (i + 1) + k] - q[3 * i + k];
+    }
+    double cf = gal_dot3(nd->e0, nd->e1) / (gal_norm3(nd->e0) * gal_norm3(nd->e1));
+    if (!(cf > -0.999))
+        return gal_error(GAL_EFAIL, "rod: the rod folds back on itself at node %d", i);
+    nd->lbar = rod->l0[i - 1] + rod->l0[i];
+    nd->n0 = gal_norm3(nd->e0), nd->n1 = gal_norm3(nd->e1);
+    for (int k = 0; k < 3; k++) nd->t0[k] = nd->e0[k] / nd->n0, nd->t1[k] = nd->e1[k] / nd->n1;
+    nd->c = gal_dot3(nd->t0, nd->t1);
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+            nd->P0[a][b] = (a == b) - nd->t0[a] * nd->t0[b];
+            nd->P1[a][b] = (a == b) - nd->t1[a] * nd->t1[b];
+        }
+    return GAL_OK;
+}
+
+/* Node-space incidence of the stencil variables: local node variable a (0..10) is the sum of
+ * coef * (edge variable idx). */
+static const int inc_n[NL] = {1, 1, 1, 2, 2, 2, 1, 1, 1, 1, 1};
+static const int inc_v[NL][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 3}, {1, 4}, {2, 5},
+                                 {3, 0}, {4, 0}, {5, 0}, {6, 0}, {7, 0}};
+static const double inc_c[NL][2] = {{-1, 0}, {-1, 0}, {-1, 0}, {1, -1}, {1, -1}, {1, -1},
+                                    {1, 0},  {1, 0},  {1, 0},  {1, 0},  {1, 0}};
+
+/* Assemble the stencil gradient g (8) and Hessian H (8 x 8, when K) of node i. */
+static void assemble(const gal_rod *rod, int i, const double *g, double (*H)[8], double *grad,
+                     gal_csc *K)
+{
+    int qi[NL];
+    gal_rod_node_q(rod, i, qi);
+    if (grad)
+        for (int a = 0; a < NL; a++) {
+            if (qi[a] < 0) continue;
+            double s = 0;
+            for (int r = 0; r < inc_n[a]; r++) s += inc_c[a][r] * g[inc_v[a][r]];
+            grad[qi[a]] += s;
+        }
+    if (K) {
+        const int *sm = rod->slot_node + (size_t)(i - 1) * NL * NL;
+        for (int a = 0; a < NL; a++)
+            for (int b = 0; b < NL; b++) {
+                int sl = sm[a * NL + b];
+                if (sl < 0) continue;
+                double h = 0;
+                for (int r = 0; r < inc_n[a]; r++)
+                    for (int t = 0; t < inc_n[b]; t++)
+                        h += inc_c[a][r] * inc_c[b][t] * H[inc_v[a][r]][inc_v[b][t]];
+                K->val[sl] += h;
+            }
+    }
+}
+
+int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, const double *q,
+                      double *U, double *grad, gal_csc *K)
+{
+    for (int i = 1; i <= rod->nn - 2; i++) {
+        gal_rod_node nd;
+        int st = geometry(rod, i, q, &nd);
+        if (st) return st;
+        double g[8], H[8][8], E = 0;
+        memset(g, 0, sizeof g);
+        if (K) memset(H, 0, sizeof H);
+        for (int k = 0; k < nt; k++) E += t[k]->node(rod, i, q, &nd, g, K ? H : NULL);
+        *U += E;
+        assemble(rod, i, g, H, grad, K);
+    }
+    return GAL_OK;
+}

@@ -1,0 +1,46 @@
+/* rod_impl.h: what the files of the rod share inside src/rod/ (not public): the stencil sizes,
+ * the tangent's pattern and slot maps, the node stencil of bending and torsion, the mass matrix,
+ * the eccentric ice's set-up and the parallel transport of frames. */
+#ifndef GALLOP_ROD_IMPL_H
+#define GALLOP_ROD_IMPL_H
+
+#include "gallop/rod/rod.h"
+
+#define NL 11   /* node stencil: x_{i-1}, x_i, x_{i+1} (9), theta_{i-1}, theta_i */
+#define EL 6    /* edge: x_j, x_{j+1} */
+
+/* Configuration indices of the node stencil at interior node i (-1 for absent twists). */
+void gal_rod_node_q(const gal_rod *rod, int i, int *qi);
+/* The tangent's pattern (rod->K) and the slot maps of the node and edge stencils. */
+int gal_rod_pattern_build(gal_rod *rod);
+
+/* The geometry of the node stencil at interior node i: the edges e0 = x_i - x_{i-1} and
+ * e1 = x_{i+1} - x_i, their lengths n0, n1 and unit tangents t0, t1, c = t0 . t1, the projections
+ * P0 = I - t0 t0^T, P1 = I - t1 t1^T and lbar = l0_{i-1} + l0_i. */
+typedef struct gal_rod_node {
+    double e0[3], e1[3], t0[3], t1[3], n0, n1, c, lbar;
+    double P0[3][3], P1[3][3];
+} gal_rod_node;
+/* One pass over the interior nodes for the node terms t[0..nt-1]: per node the geometry (GAL_EFAIL
+ * with a message when the rod folds back on itself), the sum of the terms' energies, gradients
+ * and Hessians (H when K != NULL), assembled into *U, grad (may be NULL) and K->val (may be NULL). */
+int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, const double *q,
+                      double *U, double *grad, gal_csc *K);
+
+/* The mass matrix rod->M and its diagonal rod->mdiag from the current rest lengths. */
+void gal_rod_mass_build(gal_rod *rod);
+/* Eccentric ice (src/rod/ice.c): the directions of the ice centre (rod->ecc_c, left NULL without
+ * eccentric ice; GAL_ENOMEM) and its twist-translation coupling added to rod->M. */
+int gal_rod_ice_init(gal_rod *rod);
+void gal_rod_ice_mass(gal_rod *rod);
+
+/* The reference frames (rod->tbar, rod->abar) from the reference geometry q0; GAL_EINPUT with a
+ * message on a zero-length element. */
+int gal_rod_frames_init(gal_rod *rod, const double *q0);
+/* Parallel transport of a (normal to tb) from unit tangent tb to unit tangent t. */
+void gal_rod_transport(const double *tb, const double *a, const double *t, double *r);
+
+/* The list of the terms that are on (rod->term, rod->nterm) from the parameters. */
+void gal_rod_terms_init(gal_rod *rod);
+
+#endif
