@@ -6,4 +6,6 @@
 #include "gallop/loads/aero.h"
 #include "gallop/loads/wind.h"
 #include "gallop/analysis/spectrum.h"
+#include "gallop/output/json.h"
+#include "gallop/output/ofile.h"
 #endif

@@ -4,6 +4,8 @@
  * model's tolerance, and of the physical effects; the cheapest setting within the tolerance. */
 #include "gallop/analysis/accuracy.h"
 #include "gallop/base/core.h"
+#include "gallop/output/json.h"
+#include "gallop/output/ofile.h"
 #include "gallop/model/model.h"
 #include "gallop/modes/modes.h"
 #include "gallop/run/sim.h"

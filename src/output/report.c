@@ -1,6 +1,8 @@
 /* report.c: CSV and JSON outputs of the modes stage. */
 #include "gallop/output/report.h"
 #include "gallop/base/core.h"
+#include "gallop/output/json.h"
+#include "gallop/output/ofile.h"
 
 #include <math.h>
 #include <stdlib.h>

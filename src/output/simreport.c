@@ -3,6 +3,8 @@
  * summary.json of `gallop simulate` and the files of `gallop compare`. */
 #include "gallop/output/simreport.h"
 #include "gallop/base/core.h"
+#include "gallop/output/json.h"
+#include "gallop/output/ofile.h"
 #include "gallop/analysis/spectrum.h"
 
 #include <math.h>

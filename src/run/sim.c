@@ -2,6 +2,7 @@
  * loads and wind (issues 5, 6). */
 #include "gallop/run/sim.h"
 #include "gallop/base/core.h"
+#include "gallop/output/ofile.h"
 #include "gallop/full/dynamics.h"
 #include "gallop/model/model.h"
 #include "gallop/reduced/rdyn.h"
