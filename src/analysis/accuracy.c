@@ -9,7 +9,7 @@
 #include "gallop/model/model.h"
 #include "gallop/modes/modes.h"
 #include "gallop/run/sim.h"
-#include "gallop/output/simreport.h"
+#include "gallop/analysis/measure.h"
 #include "gallop/statics/statics.h"
 
 #include <math.h>
