@@ -3,11 +3,10 @@
 #include "gallop/output/accreport.h"
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
-#include "gallop/output/ofile.h"
+#include "gallop/output/outset.h"
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 static void csv_num(FILE *fp, double v)
 {
@@ -42,81 +41,92 @@ static void json_row(gal_json *j, const gal_acc_row *w)
     gal_json_obj_end(j);
 }
 
+static int write_csv(gal_outset *o, const gal_acc_result *r)
+{
+    FILE *fp = gal_outset_open(o, "accuracy.csv");
+    if (!fp) return GAL_EIO;
+    fprintf(fp, "study,setting,value,error,wall_time_s,chosen\n");
+    for (int i = 0; i < r->n; i++) {
+        const gal_acc_row *w = r->row + i;
+        fprintf(fp, "%s,%s,%s,", gal_acc_study_names[w->study], w->setting, w->value);
+        csv_num(fp, w->error);
+        fprintf(fp, ",%.6g,%d\n", w->wall_time_s, w->chosen);
+    }
+    return gal_outset_close(o, fp);
+}
+
+/* one study: its reference, the chosen setting, what it buys, its rows */
+static void json_study(gal_json *j, const gal_acc_result *r, int s)
+{
+    const gal_acc_summary *S = r->study + s;
+    const gal_acc_row *ref = S->reference >= 0 ? r->row + S->reference : NULL;
+    const gal_acc_row *c = S->chosen >= 0 ? r->row + S->chosen : NULL;
+    gal_json_obj_begin(j);
+    gal_json_key(j, "reference");
+    gal_json_obj_begin(j);
+    gal_json_kv_str(j, "setting", ref ? ref->setting : "");
+    gal_json_kv_str(j, "value", ref ? ref->value : "");
+    gal_json_kv_num(j, "wall_time_s", ref ? ref->wall_time_s : NAN);
+    gal_json_obj_end(j);
+    gal_json_key(j, "meets_tolerance");
+    gal_json_bool(j, c != NULL);
+    gal_json_key(j, "chosen");
+    if (c) {
+        gal_json_obj_begin(j);
+        gal_json_kv_str(j, "setting", c->setting);
+        gal_json_kv_str(j, "value", c->value);
+        gal_json_kv_num(j, "error", c->error);
+        gal_json_kv_num(j, "wall_time_s", c->wall_time_s);
+        gal_json_kv_num(j, "build_time_s", c->build_time_s);
+        gal_json_obj_end(j);
+    } else {
+        gal_json_num(j, NAN);
+    }
+    gal_json_kv_str(j, "buys", S->buys);
+    if (S->note[0]) gal_json_kv_str(j, "note", S->note);
+    if (isfinite(S->steady_from_s)) gal_json_kv_num(j, "steady_from_s", S->steady_from_s);
+    if (isfinite(S->output_interval_s)) gal_json_kv_num(j, "output_interval_s", S->output_interval_s);
+    gal_json_key(j, "rows");
+    gal_json_arr_begin(j);
+    for (int i = 0; i < r->n; i++)
+        if ((int)r->row[i].study == s) json_row(j, r->row + i);
+    gal_json_arr_end(j);
+    gal_json_obj_end(j);
+}
+
+static int write_summary(gal_outset *o, const gal_scene *sc, const gal_acc_result *r)
+{
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_num(j, "tolerance", r->tolerance);
+    gal_json_kv_num(j, "wall_time_s", r->wall_time_s);
+    gal_json_key(j, "string_theory");
+    gal_json_obj_begin(j);
+    gal_json_kv_str(j, "applies", isfinite(r->string_hz) ? "level span with gravity: f_1 = 1/(2L) sqrt(H/m)"
+                                                        : "no (inclined span, gravity off, or elements study not run)");
+    gal_json_kv_num(j, "first_horizontal_hz", r->string_hz);
+    gal_json_obj_end(j);
+    gal_json_key(j, "studies");
+    gal_json_obj_begin(j);
+    for (int s = 0; s < GAL_ACC_NSTUDY; s++) {
+        if (!r->study[s].ran) continue;
+        gal_json_key(j, gal_acc_study_names[s]);
+        json_study(j, r, s);
+    }
+    gal_json_obj_end(j);
+    return GAL_OK;
+}
+
 int gal_accuracy_write(const char *dir, const gal_scene *sc, const gal_acc_result *r)
 {
-    int st = gal_mkdirs(dir);
-    if (st) return st;
-    char *pc = gal_path_join(dir, "accuracy.csv"), *pj = gal_path_join(dir, "summary.json");
-    if (!pc || !pj) { free(pc); free(pj); return gal_error(GAL_ENOMEM, "out of memory"); }
-    gal_ofile f;
-    if (!(st = gal_ofile_open(&f, pc))) {
-        fprintf(f.fp, "study,setting,value,error,wall_time_s,chosen\n");
-        for (int i = 0; i < r->n; i++) {
-            const gal_acc_row *w = r->row + i;
-            fprintf(f.fp, "%s,%s,%s,", gal_acc_study_names[w->study], w->setting, w->value);
-            csv_num(f.fp, w->error);
-            fprintf(f.fp, ",%.6g,%d\n", w->wall_time_s, w->chosen);
-        }
-        st = gal_ofile_close(&f, 1);
-    }
-    if (!st && !(st = gal_ofile_open(&f, pj))) {
-        gal_json j;
-        gal_json_begin(&j, f.fp);
-        gal_json_kv_str(&j, "scene", sc->path);
-        gal_json_kv_num(&j, "tolerance", r->tolerance);
-        gal_json_kv_num(&j, "wall_time_s", r->wall_time_s);
-        gal_json_key(&j, "string_theory");
-        gal_json_obj_begin(&j);
-        gal_json_kv_str(&j, "applies", isfinite(r->string_hz) ? "level span with gravity: f_1 = 1/(2L) sqrt(H/m)"
-                                                              : "no (inclined span, gravity off, or elements study not run)");
-        gal_json_kv_num(&j, "first_horizontal_hz", r->string_hz);
-        gal_json_obj_end(&j);
-        gal_json_key(&j, "studies");
-        gal_json_obj_begin(&j);
-        for (int s = 0; s < GAL_ACC_NSTUDY; s++) {
-            const gal_acc_summary *S = r->study + s;
-            if (!S->ran) continue;
-            gal_json_key(&j, gal_acc_study_names[s]);
-            gal_json_obj_begin(&j);
-            const gal_acc_row *ref = S->reference >= 0 ? r->row + S->reference : NULL;
-            const gal_acc_row *c = S->chosen >= 0 ? r->row + S->chosen : NULL;
-            gal_json_key(&j, "reference");
-            gal_json_obj_begin(&j);
-            gal_json_kv_str(&j, "setting", ref ? ref->setting : "");
-            gal_json_kv_str(&j, "value", ref ? ref->value : "");
-            gal_json_kv_num(&j, "wall_time_s", ref ? ref->wall_time_s : NAN);
-            gal_json_obj_end(&j);
-            gal_json_key(&j, "meets_tolerance");
-            gal_json_bool(&j, c != NULL);
-            gal_json_key(&j, "chosen");
-            if (c) {
-                gal_json_obj_begin(&j);
-                gal_json_kv_str(&j, "setting", c->setting);
-                gal_json_kv_str(&j, "value", c->value);
-                gal_json_kv_num(&j, "error", c->error);
-                gal_json_kv_num(&j, "wall_time_s", c->wall_time_s);
-                gal_json_kv_num(&j, "build_time_s", c->build_time_s);
-                gal_json_obj_end(&j);
-            } else {
-                gal_json_num(&j, NAN);
-            }
-            gal_json_kv_str(&j, "buys", S->buys);
-            if (S->note[0]) gal_json_kv_str(&j, "note", S->note);
-            if (isfinite(S->steady_from_s)) gal_json_kv_num(&j, "steady_from_s", S->steady_from_s);
-            if (isfinite(S->output_interval_s)) gal_json_kv_num(&j, "output_interval_s", S->output_interval_s);
-            gal_json_key(&j, "rows");
-            gal_json_arr_begin(&j);
-            for (int i = 0; i < r->n; i++)
-                if ((int)r->row[i].study == s) json_row(&j, r->row + i);
-            gal_json_arr_end(&j);
-            gal_json_obj_end(&j);
-        }
-        gal_json_obj_end(&j);
-        gal_json_end(&j);
-        st = gal_ofile_close(&f, !ferror(f.fp));
-    }
-    free(pc);
-    free(pj);
+    gal_outset *o;
+    int st = gal_outset_begin(&o, dir, "accuracy");
+    if (!st) st = gal_outset_scene(o, sc);
+    if (!st) st = write_csv(o, r);
+    if (!st) st = write_summary(o, sc, r);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
     return st;
 }
 

@@ -1,9 +1,11 @@
-/* simreport.c: the files of a galloping run: trace.csv and the summary.json of `gallop simulate`
- * (the measures of analysis/measure.c), compare.csv and summary.json of `gallop compare`. */
+/* simreport.c: the files of a galloping run, each command's as one output set (outset.h):
+ * trace.csv and summary.json of `gallop simulate` (the measures of analysis/measure.c),
+ * compare.csv and summary.json of `gallop compare`. */
 #include "gallop/output/simreport.h"
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
 #include "gallop/output/ofile.h"
+#include "gallop/output/outset.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -70,99 +72,62 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     gal_json_obj_end(j);
 }
 
-int gal_sim_write_summary(const char *path, const gal_scene *sc, const gal_sim_result *r)
+static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *r)
 {
-    gal_ofile f;
-    int st = gal_ofile_open(&f, path);
-    if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "command", "simulate");
-    gal_json_kv_str(&j, "scene", sc->path);
-    gal_json_kv_num(&j, "duration_s", r->time[r->nsamples - 1]);
-    gal_json_kv_num(&j, "output_interval_s", r->dt_out);
-    int mid = gal_sim_mid_probe(r);
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "simulate");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_num(j, "duration_s", r->time[r->nsamples - 1]);
+    gal_json_kv_num(j, "output_interval_s", r->dt_out);
+    int mid = gal_sim_mid_probe(r), st;
     gal_sim_measures mm;
-    if ((st = gal_sim_measure(r, mid, -1, &mm))) { gal_ofile_close(&f, 0); return st; }
-    json_run(&j, r, &mm);
-    gal_json_key(&j, "probes");
-    gal_json_arr_begin(&j);
+    if ((st = gal_sim_measure(r, mid, -1, &mm))) return st;
+    json_run(j, r, &mm);
+    gal_json_key(j, "probes");
+    gal_json_arr_begin(j);
     for (int k = 0; k < r->nprobe; k++) {
         gal_sim_measures m;
-        if ((st = gal_sim_measure(r, k, -1, &m))) break;
-        gal_json_obj_begin(&j);
-        gal_json_kv_num(&j, "position", r->probe[k]);
-        json_measures(&j, &m);
-        gal_json_obj_end(&j);
+        if ((st = gal_sim_measure(r, k, -1, &m))) return st;
+        gal_json_obj_begin(j);
+        gal_json_kv_num(j, "position", r->probe[k]);
+        json_measures(j, &m);
+        gal_json_obj_end(j);
     }
-    gal_json_arr_end(&j);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, st == GAL_OK);
+    gal_json_arr_end(j);
+    return GAL_OK;
 }
 
-static double relerr(double a, double b)
+/* the trace of a run, one line per sample */
+static void trace_csv(FILE *fp, const gal_sim_result *res)
 {
-    return fabs(a - b) / fmax(fabs(b), 1e-300);
+    fprintf(fp, "# %s model; displacements from the equilibrium at the probes (fractions of the span)\n",
+            res->kind == GAL_MODEL_FULL ? "full" : "reduced");
+    fprintf(fp, "time_s");
+    for (int k = 0; k < res->nprobe; k++) {
+        double a = res->probe[k];
+        fprintf(fp, ",p%g_horizontal_m,p%g_vertical_m,p%g_along_m,p%g_twist_deg", a, a, a, a);
+    }
+    fprintf(fp, ",tension_left_n,tension_right_n\n");
+    for (long i = 0; i < res->nsamples; i++) {
+        fprintf(fp, "%.6f", res->time[i]);
+        for (int c = 0; c < 4 * res->nprobe; c++) fprintf(fp, ",%.8g", res->trace[(size_t)i * 4 * res->nprobe + c]);
+        fprintf(fp, ",%.8g,%.8g\n", res->tension[2 * i], res->tension[2 * i + 1]);
+    }
 }
 
-int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_result *full,
-                          const gal_sim_result *red, gal_compare_figures *out)
+int gal_sim_write(const char *dir, const gal_scene *sc, const gal_sim_result *r)
 {
-    int kf = gal_sim_mid_probe(full), kr = gal_sim_mid_probe(red);
-    gal_sim_measures mf, mr;
-    int st = gal_sim_measure(full, kf, -1, &mf);
-    if (!st) st = gal_sim_measure(red, kr, mf.steady_from_s, &mr); /* the same steady window */
-    if (st) return st;
-    gal_compare_figures c;
-    c.frequency_error = relerr(mr.frequency_hz[1], mf.frequency_hz[1]);
-    c.err_vertical = relerr(mr.peak_to_peak[1], mf.peak_to_peak[1]);
-    c.err_horizontal = relerr(mr.peak_to_peak[0], mf.peak_to_peak[0]);
-    c.err_twist = relerr(mr.peak_to_peak[3], mf.peak_to_peak[3]);
-    c.amplitude_error = fmax(c.err_vertical, fmax(c.err_horizontal, c.err_twist));
-    double dur = full->time[full->nsamples - 1];
-    c.speedup = (full->wall_time_s / dur) / (red->wall_time_s / dur);
-    if (out) *out = c;
-
-    gal_ofile f;
-    st = gal_ofile_open_in(&f, dir, "compare.csv");
-    if (st) return st;
-    int wf = 4 * full->nprobe, wr = 4 * red->nprobe;
-    fprintf(f.fp, "time_s,full_vertical_m,reduced_vertical_m,full_horizontal_m,reduced_horizontal_m,"
-                  "full_twist_deg,reduced_twist_deg\n");
-    long n = full->nsamples < red->nsamples ? full->nsamples : red->nsamples;
-    for (long i = 0; i < n; i++) {
-        const double *a = full->trace + (size_t)i * wf + 4 * kf, *b = red->trace + (size_t)i * wr + 4 * kr;
-        fprintf(f.fp, "%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", full->time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
-    }
-    if ((st = gal_ofile_close(&f, 1))) return st;
-
-    st = gal_ofile_open_in(&f, dir, "summary.json");
-    if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "command", "compare");
-    gal_json_kv_str(&j, "scene", sc->path);
-    gal_json_kv_num(&j, "duration_s", dur);
-    gal_json_kv_num(&j, "steady_from_s", mf.steady_from_s);
-    gal_json_key(&j, "full");
-    gal_json_obj_begin(&j);
-    json_run(&j, full, &mf);
-    gal_json_obj_end(&j);
-    gal_json_key(&j, "reduced");
-    gal_json_obj_begin(&j);
-    json_run(&j, red, &mr);
-    gal_json_obj_end(&j);
-    gal_json_kv_num(&j, "frequency_error", c.frequency_error);
-    gal_json_kv_num(&j, "amplitude_error", c.amplitude_error);
-    gal_json_key(&j, "amplitude_errors");
-    gal_json_obj_begin(&j);
-    gal_json_kv_num(&j, "vertical", c.err_vertical);
-    gal_json_kv_num(&j, "horizontal", c.err_horizontal);
-    gal_json_kv_num(&j, "twist", c.err_twist);
-    gal_json_obj_end(&j);
-    gal_json_kv_num(&j, "speedup", c.speedup);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, 1);
+    gal_outset *o;
+    int st = gal_outset_begin(&o, dir, "simulate");
+    if (!st) st = gal_outset_scene(o, sc);
+    FILE *fp = st ? NULL : gal_outset_open(o, "trace.csv");
+    if (!st && !fp) st = GAL_EIO;
+    if (fp) trace_csv(fp, r), st = gal_outset_close(o, fp);
+    if (!st) st = write_summary(o, sc, r);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
+    return st;
 }
 
 int gal_sim_write_trace(const char *path, const gal_sim_result *res)
@@ -170,18 +135,92 @@ int gal_sim_write_trace(const char *path, const gal_sim_result *res)
     gal_ofile f;
     int st = gal_ofile_open(&f, path);
     if (st) return st;
-    fprintf(f.fp, "# %s model; displacements from the equilibrium at the probes (fractions of the span)\n",
-            res->kind == GAL_MODEL_FULL ? "full" : "reduced");
-    fprintf(f.fp, "time_s");
-    for (int k = 0; k < res->nprobe; k++) {
-        double a = res->probe[k];
-        fprintf(f.fp, ",p%g_horizontal_m,p%g_vertical_m,p%g_along_m,p%g_twist_deg", a, a, a, a);
-    }
-    fprintf(f.fp, ",tension_left_n,tension_right_n\n");
-    for (long i = 0; i < res->nsamples; i++) {
-        fprintf(f.fp, "%.6f", res->time[i]);
-        for (int c = 0; c < 4 * res->nprobe; c++) fprintf(f.fp, ",%.8g", res->trace[(size_t)i * 4 * res->nprobe + c]);
-        fprintf(f.fp, ",%.8g,%.8g\n", res->tension[2 * i], res->tension[2 * i + 1]);
-    }
+    trace_csv(f.fp, res);
     return gal_ofile_close(&f, 1);
+}
+
+static double relerr(double a, double b)
+{
+    return fabs(a - b) / fmax(fabs(b), 1e-300);
+}
+
+/* the figures of the comparison at mid-span over the full model's steady window */
+static int compare_figures(const gal_sim_result *full, const gal_sim_result *red, gal_sim_measures *mf,
+                           gal_sim_measures *mr, gal_compare_figures *c)
+{
+    int st = gal_sim_measure(full, gal_sim_mid_probe(full), -1, mf);
+    if (!st) st = gal_sim_measure(red, gal_sim_mid_probe(red), mf->steady_from_s, mr); /* the same window */
+    if (st) return st;
+    c->frequency_error = relerr(mr->frequency_hz[1], mf->frequency_hz[1]);
+    c->err_vertical = relerr(mr->peak_to_peak[1], mf->peak_to_peak[1]);
+    c->err_horizontal = relerr(mr->peak_to_peak[0], mf->peak_to_peak[0]);
+    c->err_twist = relerr(mr->peak_to_peak[3], mf->peak_to_peak[3]);
+    c->amplitude_error = fmax(c->err_vertical, fmax(c->err_horizontal, c->err_twist));
+    double dur = full->time[full->nsamples - 1];
+    c->speedup = (full->wall_time_s / dur) / (red->wall_time_s / dur);
+    return GAL_OK;
+}
+
+static int write_compare_csv(gal_outset *o, const gal_sim_result *full, const gal_sim_result *red)
+{
+    FILE *fp = gal_outset_open(o, "compare.csv");
+    if (!fp) return GAL_EIO;
+    int kf = gal_sim_mid_probe(full), kr = gal_sim_mid_probe(red);
+    int wf = 4 * full->nprobe, wr = 4 * red->nprobe;
+    fprintf(fp, "time_s,full_vertical_m,reduced_vertical_m,full_horizontal_m,reduced_horizontal_m,"
+                "full_twist_deg,reduced_twist_deg\n");
+    long n = full->nsamples < red->nsamples ? full->nsamples : red->nsamples;
+    for (long i = 0; i < n; i++) {
+        const double *a = full->trace + (size_t)i * wf + 4 * kf, *b = red->trace + (size_t)i * wr + 4 * kr;
+        fprintf(fp, "%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", full->time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
+    }
+    return gal_outset_close(o, fp);
+}
+
+static int write_compare_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *full,
+                                 const gal_sim_result *red, const gal_sim_measures *mf, const gal_sim_measures *mr,
+                                 const gal_compare_figures *c)
+{
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "compare");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_num(j, "duration_s", full->time[full->nsamples - 1]);
+    gal_json_kv_num(j, "steady_from_s", mf->steady_from_s);
+    gal_json_key(j, "full");
+    gal_json_obj_begin(j);
+    json_run(j, full, mf);
+    gal_json_obj_end(j);
+    gal_json_key(j, "reduced");
+    gal_json_obj_begin(j);
+    json_run(j, red, mr);
+    gal_json_obj_end(j);
+    gal_json_kv_num(j, "frequency_error", c->frequency_error);
+    gal_json_kv_num(j, "amplitude_error", c->amplitude_error);
+    gal_json_key(j, "amplitude_errors");
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "vertical", c->err_vertical);
+    gal_json_kv_num(j, "horizontal", c->err_horizontal);
+    gal_json_kv_num(j, "twist", c->err_twist);
+    gal_json_obj_end(j);
+    gal_json_kv_num(j, "speedup", c->speedup);
+    return GAL_OK;
+}
+
+int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_result *full,
+                          const gal_sim_result *red, gal_compare_figures *out)
+{
+    gal_sim_measures mf, mr;
+    gal_compare_figures c;
+    int st = compare_figures(full, red, &mf, &mr, &c);
+    if (st) return st;
+    if (out) *out = c;
+    gal_outset *o;
+    st = gal_outset_begin(&o, dir, "compare");
+    if (!st) st = gal_outset_scene(o, sc);
+    if (!st) st = write_compare_csv(o, full, red);
+    if (!st) st = write_compare_summary(o, sc, full, red, &mf, &mr, &c);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
+    return st;
 }

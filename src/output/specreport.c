@@ -3,7 +3,7 @@
 #include "gallop/output/specreport.h"
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
-#include "gallop/output/ofile.h"
+#include "gallop/output/outset.h"
 
 #include <math.h>
 
@@ -13,20 +13,19 @@ static void fmt(char *buf, size_t n, double v)
     else snprintf(buf, n, "none");
 }
 
-static int write_psd(const char *dir, const gal_trace *tr, const gal_trace_spectrum *s)
+static int write_psd(gal_outset *o, const gal_trace *tr, const gal_trace_spectrum *s)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "psd.csv");
-    if (st) return st;
-    fprintf(f.fp, "frequency_hz");
-    for (size_t c = 0; c < s->nsel; c++) fprintf(f.fp, ",%s", tr->names[s->sel[c]]);
-    fputc('\n', f.fp);
+    FILE *fp = gal_outset_open(o, "psd.csv");
+    if (!fp) return GAL_EIO;
+    fprintf(fp, "frequency_hz");
+    for (size_t c = 0; c < s->nsel; c++) fprintf(fp, ",%s", tr->names[s->sel[c]]);
+    fputc('\n', fp);
     for (size_t k = 0; k < s->nf; k++) {
-        fprintf(f.fp, "%.10g", (double)k * s->df);
-        for (size_t c = 0; c < s->nsel; c++) fprintf(f.fp, ",%.10g", s->psd[c * s->nf + k]);
-        fputc('\n', f.fp);
+        fprintf(fp, "%.10g", (double)k * s->df);
+        for (size_t c = 0; c < s->nsel; c++) fprintf(fp, ",%.10g", s->psd[c * s->nf + k]);
+        fputc('\n', fp);
     }
-    return gal_ofile_close(&f, 1);
+    return gal_outset_close(o, fp);
 }
 
 static void json_orbit(gal_json *j, const gal_trace *tr, const gal_trace_pair *p)
@@ -58,56 +57,56 @@ static void json_column(gal_json *j, const gal_measures *m, double tss)
     gal_json_obj_end(j);
 }
 
-static int write_summary(const char *dir, const char *path, const gal_trace *tr, const gal_trace_spectrum *s,
+static int write_summary(gal_outset *o, const char *path, const gal_trace *tr, const gal_trace_spectrum *s,
                          double wall)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "summary.json");
-    if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "trace", path);
-    gal_json_kv_str(&j, "time_column", tr->time_name);
-    gal_json_kv_int(&j, "samples", (long)tr->n);
-    gal_json_kv_num(&j, "dt_s", tr->dt);
-    gal_json_kv_num(&j, "steady_from_s", tr->t[s->i0]);
-    gal_json_kv_str(&j, "steady_from_rule", s->auto_from ? "auto" : "option --from");
-    gal_json_kv_int(&j, "steady_samples", (long)(tr->n - s->i0));
-    gal_json_kv_int(&j, "segment", (long)s->nseg);
-    gal_json_kv_int(&j, "segments", (long)s->nsegments);
-    gal_json_kv_num(&j, "frequency_resolution_hz", s->df);
-    gal_json_key(&j, "columns");
-    gal_json_obj_begin(&j);
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "trace", path);
+    gal_json_kv_str(j, "time_column", tr->time_name);
+    gal_json_kv_int(j, "samples", (long)tr->n);
+    gal_json_kv_num(j, "dt_s", tr->dt);
+    gal_json_kv_num(j, "steady_from_s", tr->t[s->i0]);
+    gal_json_kv_str(j, "steady_from_rule", s->auto_from ? "auto" : "option --from");
+    gal_json_kv_int(j, "steady_samples", (long)(tr->n - s->i0));
+    gal_json_kv_int(j, "segment", (long)s->nseg);
+    gal_json_kv_int(j, "segments", (long)s->nsegments);
+    gal_json_kv_num(j, "frequency_resolution_hz", s->df);
+    gal_json_key(j, "columns");
+    gal_json_obj_begin(j);
     for (size_t c = 0; c < s->nsel; c++) {
-        gal_json_key(&j, tr->names[s->sel[c]]);
-        json_column(&j, &s->m[c], s->tss[c]);
+        gal_json_key(j, tr->names[s->sel[c]]);
+        json_column(j, &s->m[c], s->tss[c]);
     }
-    gal_json_obj_end(&j);
+    gal_json_obj_end(j);
     if (s->npairs > 0) {
-        gal_json_key(&j, "orbit");
-        gal_json_obj_begin(&j);
-        json_orbit(&j, tr, &s->pairs[0]);
-        gal_json_obj_end(&j);
+        gal_json_key(j, "orbit");
+        gal_json_obj_begin(j);
+        json_orbit(j, tr, &s->pairs[0]);
+        gal_json_obj_end(j);
     }
-    gal_json_key(&j, "orbits");
-    gal_json_arr_begin(&j);
+    gal_json_key(j, "orbits");
+    gal_json_arr_begin(j);
     for (size_t q = 0; q < s->npairs; q++) {
-        gal_json_obj_begin(&j);
-        json_orbit(&j, tr, &s->pairs[q]);
-        gal_json_obj_end(&j);
+        gal_json_obj_begin(j);
+        json_orbit(j, tr, &s->pairs[q]);
+        gal_json_obj_end(j);
     }
-    gal_json_arr_end(&j);
-    gal_json_kv_num(&j, "wall_time_s", wall);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, 1);
+    gal_json_arr_end(j);
+    gal_json_kv_num(j, "wall_time_s", wall);
+    return GAL_OK;
 }
 
 int gal_trace_spectrum_write(const char *dir, const char *trace_path, const gal_trace *tr,
                              const gal_trace_spectrum *s, double wall_time_s)
 {
-    int st = gal_mkdirs(dir);
-    if (!st) st = write_psd(dir, tr, s);
-    if (!st) st = write_summary(dir, trace_path, tr, s, wall_time_s);
+    gal_outset *o;
+    int st = gal_outset_begin(&o, dir, "spectrum");
+    if (!st) st = gal_outset_input(o, "trace_hash", trace_path); /* no scene: the trace's bytes */
+    if (!st) st = write_psd(o, tr, s);
+    if (!st) st = write_summary(o, trace_path, tr, s, wall_time_s);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
     return st;
 }
 

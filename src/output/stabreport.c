@@ -3,7 +3,7 @@
 #include "gallop/output/stabreport.h"
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
-#include "gallop/output/ofile.h"
+#include "gallop/output/outset.h"
 
 #include <math.h>
 
@@ -15,24 +15,23 @@ static void csv_num(FILE *fp, double v)
     else fputc(',', fp); /* inf (stable at any speed): empty field */
 }
 
-static int write_csv(const gal_stability *S, const char *dir)
+static int write_csv(const gal_stability *S, gal_outset *o)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "stability.csv");
-    if (st) return st;
-    fprintf(f.fp, "alpha_deg,cd,cl,cm,dcl_dalpha,den_hartog");
-    for (int m = 0; m < S->p.nmodes; m++) fprintf(f.fp, ",onset_speed_mode%d_m_s", m + 1);
-    fputc('\n', f.fp);
+    FILE *fp = gal_outset_open(o, "stability.csv");
+    if (!fp) return GAL_EIO;
+    fprintf(fp, "alpha_deg,cd,cl,cm,dcl_dalpha,den_hartog");
+    for (int m = 0; m < S->p.nmodes; m++) fprintf(fp, ",onset_speed_mode%d_m_s", m + 1);
+    fputc('\n', fp);
     for (int i = 0; i < GAL_STABILITY_NALPHA; i++) {
         const gal_stability_row *r = S->r + i;
-        fprintf(f.fp, "%g", r->alpha_deg);
-        for (int c = 0; c < 3; c++) csv_num(f.fp, r->c[c]);
-        csv_num(f.fp, r->dcl);
-        csv_num(f.fp, r->h);
-        for (int m = 0; m < S->p.nmodes; m++) csv_num(f.fp, r->onset[m]);
-        fputc('\n', f.fp);
+        fprintf(fp, "%g", r->alpha_deg);
+        for (int c = 0; c < 3; c++) csv_num(fp, r->c[c]);
+        csv_num(fp, r->dcl);
+        csv_num(fp, r->h);
+        for (int m = 0; m < S->p.nmodes; m++) csv_num(fp, r->onset[m]);
+        fputc('\n', fp);
     }
-    return gal_ofile_close(&f, 1);
+    return gal_outset_close(o, fp);
 }
 
 /* [from, to] in degrees of each run of grid angles where H < 0 */
@@ -64,39 +63,39 @@ static void json_modes(const gal_stability *S, gal_json *j)
     gal_json_arr_end(j);
 }
 
-static int write_summary(const gal_stability *S, const gal_scene *sc, const char *dir, double wall)
+static int write_summary(const gal_stability *S, const gal_scene *sc, gal_outset *o, double wall)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "summary.json");
-    if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "command", "stability");
-    gal_json_kv_str(&j, "scene", sc->path);
-    gal_json_kv_str(&j, "table", S->t->path);
-    gal_json_kv_str(&j, "table_source", S->t->source);
-    gal_json_kv_num(&j, "attack_angle_deg", S->p.attack_angle / DEG);
-    gal_json_kv_num(&j, "den_hartog_at_rest", S->h_rest);
-    gal_json_key(&j, "unstable_ranges_deg");
-    json_ranges(S, &j);
-    gal_json_kv_num(&j, "min_den_hartog", S->r[S->imin].h);
-    gal_json_kv_num(&j, "min_den_hartog_alpha_deg", S->r[S->imin].alpha_deg);
-    gal_json_kv_num(&j, "mass_per_length_kg_m", S->p.mass);
-    gal_json_kv_num(&j, "damping_ratio", S->p.zeta);
-    gal_json_kv_num(&j, "air_density_kg_m3", S->p.rho);
-    gal_json_kv_num(&j, "diameter_m", S->p.diam);
-    gal_json_key(&j, "modes");
-    json_modes(S, &j);
-    gal_json_kv_num(&j, "wall_time_s", wall);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, 1);
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "stability");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_str(j, "table", S->t->path);
+    gal_json_kv_str(j, "table_source", S->t->source);
+    gal_json_kv_num(j, "attack_angle_deg", S->p.attack_angle / DEG);
+    gal_json_kv_num(j, "den_hartog_at_rest", S->h_rest);
+    gal_json_key(j, "unstable_ranges_deg");
+    json_ranges(S, j);
+    gal_json_kv_num(j, "min_den_hartog", S->r[S->imin].h);
+    gal_json_kv_num(j, "min_den_hartog_alpha_deg", S->r[S->imin].alpha_deg);
+    gal_json_kv_num(j, "mass_per_length_kg_m", S->p.mass);
+    gal_json_kv_num(j, "damping_ratio", S->p.zeta);
+    gal_json_kv_num(j, "air_density_kg_m3", S->p.rho);
+    gal_json_kv_num(j, "diameter_m", S->p.diam);
+    gal_json_key(j, "modes");
+    json_modes(S, j);
+    gal_json_kv_num(j, "wall_time_s", wall);
+    return GAL_OK;
 }
 
 int gal_stability_write(const char *dir, const gal_scene *sc, const gal_stability *S, double wall_time_s)
 {
-    int st = gal_mkdirs(dir);
-    if (!st) st = write_csv(S, dir);
-    if (!st) st = write_summary(S, sc, dir, wall_time_s);
+    gal_outset *o;
+    int st = gal_outset_begin(&o, dir, "stability");
+    if (!st) st = gal_outset_scene(o, sc);
+    if (!st) st = write_csv(S, o);
+    if (!st) st = write_summary(S, sc, o, wall_time_s);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
     return st;
 }
 

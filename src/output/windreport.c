@@ -3,28 +3,27 @@
 #include "gallop/output/windreport.h"
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
-#include "gallop/output/ofile.h"
+#include "gallop/output/outset.h"
 
 #include <math.h>
 
 static const char *const spectrum_names[] = {"none", "kaimal", "davenport", "von_karman"};
 
-static int write_csv(const char *dir, const gal_wind *w, double U, const int *pt, int np)
+static int write_csv(gal_outset *o, const gal_wind *w, double U, const int *pt, int np)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "wind.csv");
-    if (st) return st;
+    FILE *fp = gal_outset_open(o, "wind.csv");
+    if (!fp) return GAL_EIO;
     double dx = gal_wind_spacing(w), dt = gal_wind_time_step(w);
-    fprintf(f.fp, "time_s");
-    for (int i = 0; i < np; i++) fprintf(f.fp, ",u_x%.6gm", pt[i] * dx);
-    fputc('\n', f.fp);
+    fprintf(fp, "time_s");
+    for (int i = 0; i < np; i++) fprintf(fp, ",u_x%.6gm", pt[i] * dx);
+    fputc('\n', fp);
     int n = gal_wind_samples(w);
     for (int k = 0; k < n; k++) {
-        fprintf(f.fp, "%.6g", k * dt);
-        for (int i = 0; i < np; i++) fprintf(f.fp, ",%.9g", U + gal_wind_u(w, pt[i], k));
-        fputc('\n', f.fp);
+        fprintf(fp, "%.6g", k * dt);
+        for (int i = 0; i < np; i++) fprintf(fp, ",%.9g", U + gal_wind_u(w, pt[i], k));
+        fputc('\n', fp);
     }
-    return gal_ofile_close(&f, 1);
+    return gal_outset_close(o, fp);
 }
 
 static void json_points(gal_json *j, const gal_wind *w, const gal_wind_stats *s)
@@ -41,45 +40,45 @@ static void json_points(gal_json *j, const gal_wind *w, const gal_wind_stats *s)
     gal_json_arr_end(j);
 }
 
-static int write_summary(const char *dir, const gal_wind_report *r, double wall)
+static int write_summary(gal_outset *o, const gal_wind_report *r, double wall)
 {
     const gal_scene *sc = r->sc;
     const gal_wind_params *wp = r->wp;
     const gal_wind *w = r->w;
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "summary.json");
-    if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "command", "wind");
-    gal_json_kv_str(&j, "scene", sc->path);
-    gal_json_kv_str(&j, "spectrum", spectrum_names[sc->wind.turbulence]);
-    gal_json_kv_num(&j, "speed_m_s", wp->speed);
-    gal_json_kv_num(&j, "intensity", wp->intensity);
-    gal_json_kv_num(&j, "target_sigma_m_s", wp->intensity * wp->speed);
-    gal_json_kv_num(&j, "discrete_sigma_m_s", sqrt(gal_wind_variance(w)));
-    gal_json_kv_num(&j, "length_scale_m", gal_wind_length_scale(wp));
-    gal_json_kv_num(&j, "coherence_decay", wp->coherence_decay);
-    gal_json_kv_int(&j, "seed", (long)wp->seed);
-    gal_json_kv_int(&j, "field_points", gal_wind_points(w));
-    gal_json_kv_num(&j, "spacing_m", gal_wind_spacing(w));
-    gal_json_kv_num(&j, "time_step_s", gal_wind_time_step(w));
-    gal_json_kv_int(&j, "samples", gal_wind_samples(w));
-    gal_json_kv_num(&j, "duration_s", gal_wind_samples(w) * gal_wind_time_step(w));
-    gal_json_kv_str(&j, "turbulence_effect", sc->effect[GAL_FX_TURBULENCE] ? "on" : "off");
-    gal_json_key(&j, "points");
-    json_points(&j, w, r->s);
-    gal_json_kv_num(&j, "generation_wall_time_s", r->gen_time_s);
-    gal_json_kv_num(&j, "wall_time_s", wall);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, 1);
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "wind");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_str(j, "spectrum", spectrum_names[sc->wind.turbulence]);
+    gal_json_kv_num(j, "speed_m_s", wp->speed);
+    gal_json_kv_num(j, "intensity", wp->intensity);
+    gal_json_kv_num(j, "target_sigma_m_s", wp->intensity * wp->speed);
+    gal_json_kv_num(j, "discrete_sigma_m_s", sqrt(gal_wind_variance(w)));
+    gal_json_kv_num(j, "length_scale_m", gal_wind_length_scale(wp));
+    gal_json_kv_num(j, "coherence_decay", wp->coherence_decay);
+    gal_json_kv_int(j, "seed", (long)wp->seed);
+    gal_json_kv_int(j, "field_points", gal_wind_points(w));
+    gal_json_kv_num(j, "spacing_m", gal_wind_spacing(w));
+    gal_json_kv_num(j, "time_step_s", gal_wind_time_step(w));
+    gal_json_kv_int(j, "samples", gal_wind_samples(w));
+    gal_json_kv_num(j, "duration_s", gal_wind_samples(w) * gal_wind_time_step(w));
+    gal_json_kv_str(j, "turbulence_effect", sc->effect[GAL_FX_TURBULENCE] ? "on" : "off");
+    gal_json_key(j, "points");
+    json_points(j, w, r->s);
+    gal_json_kv_num(j, "generation_wall_time_s", r->gen_time_s);
+    gal_json_kv_num(j, "wall_time_s", wall);
+    return GAL_OK;
 }
 
 int gal_wind_write(const char *dir, const gal_wind_report *r, double wall_time_s)
 {
-    int st = gal_mkdirs(dir);
-    if (!st) st = write_csv(dir, r->w, r->wp->speed, r->s->pt, r->s->np);
-    if (!st) st = write_summary(dir, r, wall_time_s);
+    gal_outset *o;
+    int st = gal_outset_begin(&o, dir, "wind");
+    if (!st) st = gal_outset_scene(o, r->sc);
+    if (!st) st = write_csv(o, r->w, r->wp->speed, r->s->pt, r->s->np);
+    if (!st) st = write_summary(o, r, wall_time_s);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
     return st;
 }
 

@@ -13,9 +13,12 @@ typedef struct gal_compare_figures {
     double speedup;                                  /* full over reduced wall time per simulated second */
 } gal_compare_figures;
 
-/* trace.csv of a run (temporary file, then rename). */
+/* DIR/trace.csv and DIR/summary.json of `gallop simulate`, one output set. */
+int gal_sim_write(const char *dir, const gal_scene *sc, const gal_sim_result *r);
+/* A lone trace.csv at path (temporary file, then rename), outside any output set. */
 int gal_sim_write_trace(const char *path, const gal_sim_result *res);
-int gal_sim_write_summary(const char *path, const gal_scene *sc, const gal_sim_result *r);
+/* DIR/compare.csv and DIR/summary.json of `gallop compare`, one output set; the figures in *out
+ * (may be NULL). */
 int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_result *full,
                           const gal_sim_result *red, gal_compare_figures *out);
 
