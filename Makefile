@@ -59,6 +59,14 @@ $(BUILD)/tests/%: tests/%.c tests/check.h $(BUILD)/libgallop.a
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d)
 
+# the git commit every summary.json records (output/record.c); "unknown" outside a git checkout.
+# build/.commit changes only when the commit does, so that record.o is rebuilt then and only then.
+GAL_COMMIT := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
+COMMIT_STAMP := build/.commit
+$(shell mkdir -p build; [ "$$(cat $(COMMIT_STAMP) 2>/dev/null)" = "$(GAL_COMMIT)" ] || echo "$(GAL_COMMIT)" > $(COMMIT_STAMP))
+$(BUILD)/obj/output/record.o: CPPFLAGS += -DGAL_COMMIT='"$(GAL_COMMIT)"'
+$(BUILD)/obj/output/record.o: $(COMMIT_STAMP)
+
 # ---- fuzzing (issue 8): libFuzzer harnesses of the scene and table parsers, built with clang ----
 FUZZ_TIME ?= 60
 FUZZ_CC   ?= clang

@@ -41,8 +41,18 @@
 #include "gallop/analysis/stability.h"
 #include "gallop/analysis/onset.h"
 #include "gallop/analysis/accuracy.h"
+#include "gallop/analysis/measure.h"
+#include "gallop/analysis/trace_spectrum.h"
+#include "gallop/analysis/windstats.h"
 /* output: reports and files */
 #include "gallop/output/report.h"
 #include "gallop/output/simreport.h"
-
+#include "gallop/output/json.h"
+#include "gallop/output/ofile.h"
+#include "gallop/output/accreport.h"
+#include "gallop/output/outset.h"
+#include "gallop/output/record.h"
+#include "gallop/output/specreport.h"
+#include "gallop/output/stabreport.h"
+#include "gallop/output/windreport.h"
 #endif

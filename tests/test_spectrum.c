@@ -1,7 +1,9 @@
-/* test_spectrum.c: Welch PSD, peaks, amplitudes, orbit, envelope and the CSV trace reader on
- * synthetic signals of known content (tolerances stated at each check). */
+/* test_spectrum.c: Welch PSD, peaks, amplitudes, orbit, envelope, the CSV trace reader and the
+ * analysis of a whole trace on synthetic signals of known content (tolerances stated at each
+ * check). */
 #include "check.h"
 #include "gallop.h"
+#include "gallop/analysis/trace_spectrum.h"
 
 #include <stdint.h>
 #include <unistd.h>
@@ -402,6 +404,94 @@ static void test_trace_nearly_uniform(void)
     free(s);
 }
 
+/* ---- the analysis of a whole trace (analysis/trace_spectrum.c) ---- */
+
+/* An in-memory trace: orbit y = 1.5 a(t) cos(w t), z = -3 + 0.5 a(t) sin(w t) at f = 0.8 Hz,
+ * a(t) a logistic rise to 1 about t = 15 s, and a constant column; 6000 samples at 0.01 s. */
+#define TS_N 6000
+static double ts_t[TS_N], ts_x[3][TS_N];
+static double *ts_cols[3] = {ts_x[0], ts_x[1], ts_x[2]};
+static char *ts_names[3] = {"mid_y", "mid_z", "flat"};
+static gal_trace ts_tr = {TS_N, 3, ts_t, ts_cols, ts_names, "time", 0.01};
+
+static void ts_fill(void)
+{
+    for (size_t k = 0; k < TS_N; k++) {
+        double t = ts_t[k] = k * 0.01, a = 1 / (1 + exp(-(t - 15) / 2));
+        ts_x[0][k] = 1.5 * a * cos(2 * PI * 0.8 * t);
+        ts_x[1][k] = -3 + 0.5 * a * sin(2 * PI * 0.8 * t);
+        ts_x[2][k] = 7;
+    }
+}
+
+static void test_trace_spectrum_auto(void)
+{
+    ts_fill();
+    int sel[3] = {0, 1, 2};
+    gal_trace_pair pairs[6];
+    size_t np = gal_trace_auto_pairs(&ts_tr, sel, 3, pairs);
+    CHECK(np == 1 && pairs[0].y == 0 && pairs[0].z == 1, "%zu pairs", np);
+    gal_trace_spectrum s;
+    int st = gal_trace_spectrum_run(&ts_tr, sel, 3, pairs, np, NAN, 0, &s);
+    CHECK(st == GAL_OK, "%s", gal_error_message());
+    if (st) { gal_trace_spectrum_clear(&s); return; }
+    /* the envelope is within 5% of 1 once a(t) > 0.95: t > 15 + 2 ln 19 = 20.9 s */
+    CHECK(s.auto_from && fabs(ts_t[s.i0] - 20.9) < 1.5, "steady from %g s, want about 20.9", ts_t[s.i0]);
+    CHECK(fabs(s.tss[0] - 20.9) < 1.5 && fabs(s.tss[1] - 20.9) < 1.5, "times to steady %g %g", s.tss[0], s.tss[1]);
+    CHECK(isnan(s.tss[2]) && isnan(s.m[2].frequency) && s.m[2].npeaks == 0, "constant column");
+    CHECK_REL(s.m[0].frequency, 0.8, 1e-4);
+    CHECK_REL(s.m[1].frequency, 0.8, 1e-4);
+    CHECK_REL(s.m[0].amplitude, 1.5, 1e-2);
+    CHECK_REL(s.m[1].amplitude, 0.5, 1e-2);
+    CHECK_NEAR(s.m[1].mean, -3, 1e-2);
+    CHECK(s.nseg == gal_spectrum_segment_choose(TS_N - s.i0) && s.nf == s.nseg / 2 + 1, "segment %zu", s.nseg);
+    CHECK_REL(s.df, 1 / (s.nseg * 0.01), 1e-12);
+    CHECK(s.nsegments == (TS_N - s.i0 - s.nseg) / (s.nseg / 2) + 1 && !s.coarse, "%zu segments", s.nsegments);
+    double var = 0; /* Parseval: the PSD integrates to the variance of the steady part, 1.5^2 / 2 */
+    for (size_t k = 0; k < s.nf; k++) var += s.psd[k] * s.df;
+    CHECK_REL(var, 1.125, 0.05);
+    /* orbit: semi-axes 1.5 (horizontal) and 0.5, not tilted (up to the end of the window) */
+    CHECK_REL(s.pairs[0].orbit.major, 1.5, 2e-2);
+    CHECK_REL(s.pairs[0].orbit.minor, 0.5, 2e-2);
+    CHECK(fabs(s.pairs[0].orbit.tilt_deg) < 1, "tilt %g deg", s.pairs[0].orbit.tilt_deg);
+    gal_trace_spectrum_clear(&s);
+}
+
+static void test_trace_spectrum_options(void)
+{
+    ts_fill();
+    int sel[1] = {1};
+    gal_trace_spectrum s;
+    int st = gal_trace_spectrum_run(&ts_tr, sel, 1, NULL, 0, 30.004, 1024, &s);
+    CHECK(st == GAL_OK && !s.auto_from && s.i0 == 3001 && s.nseg == 1024 && s.npairs == 0, "from 30.004 s: "
+          "sample %zu, segment %zu", s.i0, s.nseg);
+    gal_trace_spectrum_clear(&s);
+    st = gal_trace_spectrum_run(&ts_tr, sel, 1, NULL, 0, 0, 16, &s);
+    CHECK(st == GAL_OK && s.i0 == 0 && s.coarse, "a 16-sample segment on 6000 samples is coarse");
+    gal_trace_spectrum_clear(&s);
+    st = gal_trace_spectrum_run(&ts_tr, sel, 1, NULL, 0, 60, 0, &s);
+    CHECK(st == GAL_EINPUT && strstr(gal_error_message(), "--from 60"), "from past the end: %s", gal_error_message());
+    gal_trace_spectrum_clear(&s);
+    st = gal_trace_spectrum_run(&ts_tr, sel, 1, NULL, 0, 59.95, 0, &s);
+    CHECK(st == GAL_EINPUT && strstr(gal_error_message(), "at least 16"), "5 samples: %s", gal_error_message());
+    gal_trace_spectrum_clear(&s);
+    st = gal_trace_spectrum_run(&ts_tr, sel, 1, NULL, 0, 50, 2048, &s);
+    CHECK(st == GAL_EINPUT && strstr(gal_error_message(), "--segment 2048"), "long segment: %s", gal_error_message());
+    gal_trace_spectrum_clear(&s);
+}
+
+static void test_trace_auto_pairs(void)
+{
+    char *names[6] = {"a_y", "b_horizontal", "a_z", "b_vertical", "c_y", "a_zz"};
+    gal_trace tr = {0};
+    tr.ncol = 6, tr.names = names;
+    int sel[6] = {0, 1, 2, 3, 4, 5};
+    gal_trace_pair p[12];
+    size_t n = gal_trace_auto_pairs(&tr, sel, 6, p);
+    CHECK(n == 2 && p[0].y == 0 && p[0].z == 2 && p[1].y == 1 && p[1].z == 3, "%zu pairs", n);
+    CHECK(gal_trace_auto_pairs(&tr, sel, 2, p) == 0, "only among the selected columns");
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/gallop_spectrum_XXXXXX");
@@ -418,6 +508,9 @@ int main(void)
     RUN(test_trace_good);
     RUN(test_trace_errors);
     RUN(test_trace_nearly_uniform);
+    RUN(test_trace_spectrum_auto);
+    RUN(test_trace_spectrum_options);
+    RUN(test_trace_auto_pairs);
     rmdir(tmpdir);
     return CHECK_SUMMARY();
 }

@@ -1,13 +1,12 @@
-/* accuracy.c: what accuracy costs in time (issue 7): sweeps of the mesh (statics + modes against a
- * fine mesh, and the first out-of-plane frequency against string theory, f = 1/(2L) sqrt(H/m)),
- * of the reduced basis (against one full-model run), of the full model's time step and the reduced
- * model's tolerance, and of the physical effects; the cheapest setting within the tolerance. */
+/* accuracy.c: what accuracy costs in time (issue 7): the sweep of the studies, the mesh study
+ * (statics + modes against a fine mesh, and the first out-of-plane frequency against string
+ * theory, f = 1/(2L) sqrt(H/m)) and the cheapest setting within the tolerance; the dynamic
+ * studies are in accuracy_dyn.c. */
 #include "gallop/analysis/accuracy.h"
+#include "analysis/accuracy_int.h"
 #include "gallop/base/core.h"
 #include "gallop/model/model.h"
 #include "gallop/modes/modes.h"
-#include "gallop/run/sim.h"
-#include "gallop/output/simreport.h"
 #include "gallop/statics/statics.h"
 
 #include <math.h>
@@ -32,14 +31,14 @@ void gal_accuracy_clear(gal_acc_result *r)
     memset(r, 0, sizeof *r);
 }
 
-static double relerr(double a, double b)
+double gal_acc_relerr(double a, double b)
 {
     if (!isfinite(a) || !isfinite(b)) return INFINITY;
     if (a == b) return 0;
     return fabs(a - b) / fmax(fabs(b), 1e-300);
 }
 
-static gal_acc_row *row_add(gal_acc_result *r, gal_acc_study s, const char *setting, const char *fmt, ...)
+gal_acc_row *gal_acc_row_add(gal_acc_result *r, gal_acc_study s, const char *setting, const char *fmt, ...)
 {
     if (r->n == r->cap) {
         int cap = r->cap ? 2 * r->cap : 32;
@@ -60,7 +59,7 @@ static gal_acc_row *row_add(gal_acc_result *r, gal_acc_study s, const char *sett
     return w;
 }
 
-static void progress(const gal_acc_opts *o, const gal_acc_row *w)
+void gal_acc_progress(const gal_acc_opts *o, const gal_acc_row *w)
 {
     if (!o->progress) return;
     fprintf(stderr, "accuracy: %-9s %s = %-10s error %-10.3g wall %.3f s\n", gal_acc_study_names[w->study],
@@ -188,7 +187,7 @@ static int study_elements(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
     scene_want(sc, want);
     for (int i = 0; i <= nv && !st; i++) {
         int isref = i == nv;
-        gal_acc_row *w = row_add(r, GAL_ACC_ELEMENTS, "model.elements", "%d", isref ? nref : v[i]);
+        gal_acc_row *w = gal_acc_row_add(r, GAL_ACC_ELEMENTS, "model.elements", "%d", isref ? nref : v[i]);
         if (!w) { st = gal_error(GAL_ENOMEM, "out of memory"); break; }
         mesh_run m, *pm = &ref;
         if (!isref) {
@@ -198,7 +197,7 @@ static int study_elements(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
                 snprintf(w->failed, sizeof w->failed, "%s", gal_error_message());
                 mesh_clear(&m);
                 w->error = INFINITY;
-                progress(o, w);
+                gal_acc_progress(o, w);
                 continue;
             }
             pm = &m;
@@ -207,75 +206,23 @@ static int study_elements(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
         for (int f = 0; f < 3; f++)
             for (int k = 0; k < want[f]; k++) {
                 double a = family_hz(&pm->md, f, k, 1), b = family_hz(&ref.md, f, k, 1);
-                if (isfinite(b)) ef = fmax(ef, relerr(a, b));
+                if (isfinite(b)) ef = fmax(ef, gal_acc_relerr(a, b));
             }
         w->err_frequency = ef;
-        w->err_sag = relerr(pm->eq.sag, ref.eq.sag);
-        w->err_tension = relerr(pm->eq.horizontal_tension, ref.eq.horizontal_tension);
+        w->err_sag = gal_acc_relerr(pm->eq.sag, ref.eq.sag);
+        w->err_tension = gal_acc_relerr(pm->eq.horizontal_tension, ref.eq.horizontal_tension);
         w->error = fmax(ef, fmax(w->err_sag, w->err_tension));
         w->wall_time_s = pm->t_total;
         w->build_time_s = pm->t_statics;
         w->reference = isref;
         w->frequency_hz = family_hz(&pm->md, GAL_FAMILY_HORIZONTAL, 0, 0);
-        w->string_error = relerr(w->frequency_hz, fs);
+        w->string_error = gal_acc_relerr(w->frequency_hz, fs);
         if (!isfinite(fs)) w->string_error = NAN;
         if (!isref) mesh_clear(&m);
-        progress(o, w);
+        gal_acc_progress(o, w);
     }
     mesh_clear(&ref);
     return st;
-}
-
-/* ======================================================================================
- * dynamic studies: one run and its measures at mid-span */
-
-typedef struct {
-    double pp, hz;        /* vertical peak-to-peak (m) and dominant frequency (Hz) at mid-span */
-    double from;          /* steady window start, s */
-    double wall, build;   /* s */
-} dyn_out;
-
-static int dyn_measure(const gal_sim_result *res, double from, dyn_out *d)
-{
-    gal_sim_measures m;
-    int st = gal_sim_measure(res, gal_sim_mid_probe(res), from, &m);
-    if (st) return st;
-    d->pp = m.peak_to_peak[1], d->hz = m.frequency_hz[1], d->from = m.steady_from_s;
-    d->wall = res->wall_time_s, d->build = res->build_time_s;
-    if (!isfinite(d->pp) || !isfinite(d->hz)) return gal_error(GAL_EFAIL, "the mid-span vertical measures are not finite");
-    return GAL_OK;
-}
-
-/* set up the scene, run one model, measure (from < 0: detect the steady window) */
-static int dyn_once(const gal_scene *sc, gal_model_kind kind, double from, dyn_out *d)
-{
-    gal_sim_setup s;
-    gal_sim_result res;
-    memset(&res, 0, sizeof res);
-    int st = gal_sim_setup_init(&s, sc, kind == GAL_MODEL_REDUCED);
-    if (!st) st = gal_sim_run(&s, kind, &res);
-    if (!st) st = dyn_measure(&res, from, d);
-    gal_sim_result_clear(&res);
-    gal_sim_setup_clear(&s);
-    return st;
-}
-
-static void dyn_fill(gal_acc_row *w, const dyn_out *d, const dyn_out *ref)
-{
-    w->err_amplitude = relerr(d->pp, ref->pp);
-    w->err_frequency = relerr(d->hz, ref->hz);
-    w->error = fmax(w->err_amplitude, w->err_frequency);
-    w->wall_time_s = d->wall;
-    w->build_time_s = d->build;
-    w->amplitude_m = d->pp;
-    w->frequency_hz = d->hz;
-}
-
-static void dyn_failed(const gal_acc_opts *o, gal_acc_row *w)
-{
-    if (o->progress) fprintf(stderr, "accuracy: %s = %s failed: %s\n", w->setting, w->value, gal_error_message());
-    snprintf(w->failed, sizeof w->failed, "%s", gal_error_message());
-    w->error = INFINITY;
 }
 
 /* highest selected mode frequency of the scene (Hz), from its own statics and modes */
@@ -290,140 +237,6 @@ static int scene_fhi(const gal_scene *sc, double *fhi)
     mesh_clear(&m);
     if (!st && !(*fhi > 0)) st = gal_error(GAL_EFAIL, "no selected mode with a positive frequency");
     return st;
-}
-
-typedef struct { int v, h, t; } basis;
-
-static int study_modes(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r)
-{
-    gal_acc_summary *S = &r->study[GAL_ACC_MODES];
-    static const basis list[] = {{1, 1, 1}, {2, 1, 1}, {2, 2, 1}, {3, 2, 1}, {3, 2, 2}, {4, 3, 2}};
-    int tors = sc->effect[GAL_FX_TORSION];
-    basis b[8];
-    int nb = 0;
-    basis own = {sc->model.modes_vertical, sc->model.modes_horizontal, tors ? sc->model.modes_torsional : 0};
-    for (int i = 0; i <= 6; i++) {
-        basis x = i < 6 ? list[i] : own;
-        if (!tors) x.t = 0;
-        if (x.v + x.h + x.t == 0) continue;
-        int dup = 0;
-        for (int j = 0; j < nb; j++) dup |= b[j].v == x.v && b[j].h == x.h && b[j].t == x.t;
-        if (dup) continue;
-        int j = nb++;  /* in order of size */
-        while (j > 0 && b[j - 1].v + b[j - 1].h + b[j - 1].t > x.v + x.h + x.t) b[j] = b[j - 1], j--;
-        b[j] = x;
-    }
-    dyn_out ref;
-    int st = dyn_once(sc, GAL_MODEL_FULL, -1, &ref);
-    if (st) return gal_error(st, "modes: the full-model reference run: %s", gal_error_message());
-    S->steady_from_s = ref.from;
-    gal_acc_row *w = row_add(r, GAL_ACC_MODES, "model", "full");
-    if (!w) return gal_error(GAL_ENOMEM, "out of memory");
-    dyn_fill(w, &ref, &ref);
-    w->reference = 1;
-    progress(o, w);
-    gal_scene s = *sc;
-    for (int i = 0; i < nb; i++) {
-        s.model.modes_vertical = b[i].v, s.model.modes_horizontal = b[i].h;
-        if (tors) s.model.modes_torsional = b[i].t;
-        if (!(w = row_add(r, GAL_ACC_MODES, "model.modes", "%d/%d/%d", b[i].v, b[i].h, b[i].t)))
-            return gal_error(GAL_ENOMEM, "out of memory");
-        dyn_out d;
-        if (dyn_once(&s, GAL_MODEL_REDUCED, ref.from, &d)) dyn_failed(o, w);
-        else dyn_fill(w, &d, &ref);
-        progress(o, w);
-    }
-    return GAL_OK;
-}
-
-/* a sweep of one setting on one shared set-up: full-model time steps or reduced tolerances */
-static int study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, gal_acc_study which,
-                       double T)
-{
-    gal_acc_summary *S = &r->study[which];
-    gal_scene s = *sc;
-    int full = which == GAL_ACC_TIME_STEP;
-    static const int div[] = {10, 20, 40, 80, 160};               /* T / div */
-    static const double tol[] = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-11};
-    int nv = full ? 5 : 7;
-    if (full) s.simulation.output_interval = T / 10;  /* every step divides the sampling interval */
-    S->output_interval_s = s.simulation.output_interval;
-    gal_sim_setup su;
-    int st = gal_sim_setup_init(&su, &s, 1);
-    if (st) { gal_sim_setup_clear(&su); return gal_error(st, "%s: set-up: %s", gal_acc_study_names[which], gal_error_message()); }
-    dyn_out d[8];
-    int ok[8], ref = -1;
-    char why[8][256];
-    /* from the finest setting down: the finest that runs is the reference (the requested one
-     * unless it fails, which the summary then says), measured first for its steady window */
-    for (int i = nv - 1; i >= 0; i--) {
-        if (full) s.simulation.time_step = T / div[i];
-        else s.simulation.tolerance = tol[i];
-        gal_sim_result res;
-        ok[i] = !gal_sim_run(&su, full ? GAL_MODEL_FULL : GAL_MODEL_REDUCED, &res) &&
-                !dyn_measure(&res, ref < 0 ? -1 : d[ref].from, &d[i]);
-        gal_sim_result_clear(&res);
-        if (!ok[i]) {
-            snprintf(why[i], sizeof why[i], "%s", gal_error_message());
-            if (o->progress) fprintf(stderr, "accuracy: %s run %d failed: %s\n", gal_acc_study_names[which], i, gal_error_message());
-            if (i == nv - 1)
-                snprintf(S->note, sizeof S->note, "the requested reference %s = %.3g failed (%s); the finest setting "
-                         "that ran is the reference", full ? "simulation.time_step" : "simulation.tolerance",
-                         full ? T / div[i] : tol[i], gal_error_message());
-            continue;
-        }
-        if (ref < 0) ref = i, S->steady_from_s = d[i].from;
-        if (o->progress) fprintf(stderr, "accuracy: %-9s %d of %d runs done\n", gal_acc_study_names[which], nv - i, nv);
-    }
-    if (ref < 0) {
-        gal_sim_setup_clear(&su);
-        return gal_error(GAL_EFAIL, "%s: no run succeeded: %s", gal_acc_study_names[which], gal_error_message());
-    }
-    gal_sim_setup_clear(&su);
-    for (int i = 0; i < nv; i++) {
-        gal_acc_row *w = full ? row_add(r, which, "simulation.time_step", "%.6g", T / div[i])
-                              : row_add(r, which, "simulation.tolerance", "%.0e", tol[i]);
-        if (!w) return gal_error(GAL_ENOMEM, "out of memory");
-        if (ok[i]) dyn_fill(w, &d[i], &d[ref]);
-        else w->error = INFINITY, snprintf(w->failed, sizeof w->failed, "%s", why[i]);
-        w->reference = i == ref;
-        progress(o, w);
-    }
-    return GAL_OK;
-}
-
-static int study_effects(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r)
-{
-    gal_acc_summary *S = &r->study[GAL_ACC_EFFECTS];
-    static const gal_effect fx[] = {GAL_FX_TORSION, GAL_FX_BENDING, GAL_FX_AERO_MOMENT, GAL_FX_AERO_DAMPING,
-                                    GAL_FX_TURBULENCE, GAL_FX_DAMPING};
-    dyn_out ref;
-    int st = dyn_once(sc, GAL_MODEL_REDUCED, -1, &ref);
-    if (st) return gal_error(st, "effects: the reference run (all effects on): %s", gal_error_message());
-    S->steady_from_s = ref.from;
-    gal_acc_row *w = row_add(r, GAL_ACC_EFFECTS, "effects", "all_on");
-    if (!w) return gal_error(GAL_ENOMEM, "out of memory");
-    dyn_fill(w, &ref, &ref);
-    w->reference = 1;
-    progress(o, w);
-    for (size_t i = 0; i < sizeof fx / sizeof fx[0]; i++) {
-        gal_effect e = fx[i];
-        if (!sc->effect[e]) continue;
-        /* only effects that do something in this scene */
-        if (e == GAL_FX_AERO_MOMENT && !sc->effect[GAL_FX_TORSION]) continue;
-        if (e == GAL_FX_TURBULENCE && sc->wind.turbulence == GAL_TURB_NONE) continue;
-        if (e == GAL_FX_DAMPING && !(sc->conductor.damping_ratio > 0)) continue;
-        gal_scene s = *sc;
-        s.effect[e] = 0;
-        char key[48];
-        snprintf(key, sizeof key, "effects.%s", gal_effect_names[e]);
-        if (!(w = row_add(r, GAL_ACC_EFFECTS, key, "off"))) return gal_error(GAL_ENOMEM, "out of memory");
-        dyn_out d;
-        if (dyn_once(&s, GAL_MODEL_REDUCED, ref.from, &d)) dyn_failed(o, w);
-        else dyn_fill(w, &d, &ref);
-        progress(o, w);
-    }
-    return GAL_OK;
 }
 
 /* ======================================================================================
@@ -519,148 +332,13 @@ int gal_accuracy_run(const gal_scene *sc, const gal_acc_opts *opts, gal_acc_resu
         if (o.progress) fprintf(stderr, "accuracy: study %s\n", gal_acc_study_names[k]);
         switch ((gal_acc_study)k) {
         case GAL_ACC_ELEMENTS: st = study_elements(sc, &o, r); break;
-        case GAL_ACC_MODES: st = study_modes(&s, &o, r); break;
-        case GAL_ACC_TIME_STEP: st = study_sweep(&s, &o, r, GAL_ACC_TIME_STEP, 1.0 / fhi); break;
-        case GAL_ACC_TOLERANCE: st = study_sweep(&s, &o, r, GAL_ACC_TOLERANCE, 1.0 / fhi); break;
-        default: st = study_effects(&s, &o, r); break;
+        case GAL_ACC_MODES: st = gal_acc_study_modes(&s, &o, r); break;
+        case GAL_ACC_TIME_STEP: st = gal_acc_study_sweep(&s, &o, r, GAL_ACC_TIME_STEP, 1.0 / fhi); break;
+        case GAL_ACC_TOLERANCE: st = gal_acc_study_sweep(&s, &o, r, GAL_ACC_TOLERANCE, 1.0 / fhi); break;
+        default: st = gal_acc_study_effects(&s, &o, r); break;
         }
         if (!st) choose(r, (gal_acc_study)k);
     }
     r->wall_time_s = gal_wall_time() - t0;
     return st;
-}
-
-/* ======================================================================================
- * output */
-
-static void csv_num(FILE *fp, double v)
-{
-    if (isnan(v)) fprintf(fp, "nan");
-    else if (isinf(v)) fprintf(fp, "inf");
-    else fprintf(fp, "%.6g", v);
-}
-
-static void json_row(gal_json *j, const gal_acc_row *w)
-{
-    gal_json_obj_begin(j);
-    gal_json_kv_str(j, "setting", w->setting);
-    gal_json_kv_str(j, "value", w->value);
-    gal_json_kv_num(j, "error", w->error);
-    gal_json_kv_num(j, "wall_time_s", w->wall_time_s);
-    gal_json_kv_num(j, "build_time_s", w->build_time_s);
-    if (w->study == GAL_ACC_ELEMENTS) {
-        gal_json_kv_num(j, "error_frequency", w->err_frequency);
-        gal_json_kv_num(j, "error_sag", w->err_sag);
-        gal_json_kv_num(j, "error_horizontal_tension", w->err_tension);
-        gal_json_kv_num(j, "first_horizontal_hz", w->frequency_hz);
-        gal_json_kv_num(j, "string_theory_error", w->string_error);
-    } else {
-        gal_json_kv_num(j, "error_amplitude", w->err_amplitude);
-        gal_json_kv_num(j, "error_frequency", w->err_frequency);
-        gal_json_kv_num(j, "vertical_peak_to_peak_m", w->amplitude_m);
-        gal_json_kv_num(j, "vertical_frequency_hz", w->frequency_hz);
-    }
-    if (w->failed[0]) gal_json_kv_str(j, "failed", w->failed);
-    gal_json_kv_int(j, "reference", w->reference);
-    gal_json_kv_int(j, "chosen", w->chosen);
-    gal_json_obj_end(j);
-}
-
-int gal_accuracy_write(const char *dir, const gal_scene *sc, const gal_acc_result *r)
-{
-    int st = gal_mkdirs(dir);
-    if (st) return st;
-    char *pc = gal_path_join(dir, "accuracy.csv"), *pj = gal_path_join(dir, "summary.json");
-    if (!pc || !pj) { free(pc); free(pj); return gal_error(GAL_ENOMEM, "out of memory"); }
-    gal_ofile f;
-    if (!(st = gal_ofile_open(&f, pc))) {
-        fprintf(f.fp, "study,setting,value,error,wall_time_s,chosen\n");
-        for (int i = 0; i < r->n; i++) {
-            const gal_acc_row *w = r->row + i;
-            fprintf(f.fp, "%s,%s,%s,", gal_acc_study_names[w->study], w->setting, w->value);
-            csv_num(f.fp, w->error);
-            fprintf(f.fp, ",%.6g,%d\n", w->wall_time_s, w->chosen);
-        }
-        st = gal_ofile_close(&f, 1);
-    }
-    if (!st && !(st = gal_ofile_open(&f, pj))) {
-        gal_json j;
-        gal_json_begin(&j, f.fp);
-        gal_json_kv_str(&j, "scene", sc->path);
-        gal_json_kv_num(&j, "tolerance", r->tolerance);
-        gal_json_kv_num(&j, "wall_time_s", r->wall_time_s);
-        gal_json_key(&j, "string_theory");
-        gal_json_obj_begin(&j);
-        gal_json_kv_str(&j, "applies", isfinite(r->string_hz) ? "level span with gravity: f_1 = 1/(2L) sqrt(H/m)"
-                                                              : "no (inclined span, gravity off, or elements study not run)");
-        gal_json_kv_num(&j, "first_horizontal_hz", r->string_hz);
-        gal_json_obj_end(&j);
-        gal_json_key(&j, "studies");
-        gal_json_obj_begin(&j);
-        for (int s = 0; s < GAL_ACC_NSTUDY; s++) {
-            const gal_acc_summary *S = r->study + s;
-            if (!S->ran) continue;
-            gal_json_key(&j, gal_acc_study_names[s]);
-            gal_json_obj_begin(&j);
-            const gal_acc_row *ref = S->reference >= 0 ? r->row + S->reference : NULL;
-            const gal_acc_row *c = S->chosen >= 0 ? r->row + S->chosen : NULL;
-            gal_json_key(&j, "reference");
-            gal_json_obj_begin(&j);
-            gal_json_kv_str(&j, "setting", ref ? ref->setting : "");
-            gal_json_kv_str(&j, "value", ref ? ref->value : "");
-            gal_json_kv_num(&j, "wall_time_s", ref ? ref->wall_time_s : NAN);
-            gal_json_obj_end(&j);
-            gal_json_key(&j, "meets_tolerance");
-            gal_json_bool(&j, c != NULL);
-            gal_json_key(&j, "chosen");
-            if (c) {
-                gal_json_obj_begin(&j);
-                gal_json_kv_str(&j, "setting", c->setting);
-                gal_json_kv_str(&j, "value", c->value);
-                gal_json_kv_num(&j, "error", c->error);
-                gal_json_kv_num(&j, "wall_time_s", c->wall_time_s);
-                gal_json_kv_num(&j, "build_time_s", c->build_time_s);
-                gal_json_obj_end(&j);
-            } else {
-                gal_json_num(&j, NAN);
-            }
-            gal_json_kv_str(&j, "buys", S->buys);
-            if (S->note[0]) gal_json_kv_str(&j, "note", S->note);
-            if (isfinite(S->steady_from_s)) gal_json_kv_num(&j, "steady_from_s", S->steady_from_s);
-            if (isfinite(S->output_interval_s)) gal_json_kv_num(&j, "output_interval_s", S->output_interval_s);
-            gal_json_key(&j, "rows");
-            gal_json_arr_begin(&j);
-            for (int i = 0; i < r->n; i++)
-                if ((int)r->row[i].study == s) json_row(&j, r->row + i);
-            gal_json_arr_end(&j);
-            gal_json_obj_end(&j);
-        }
-        gal_json_obj_end(&j);
-        gal_json_end(&j);
-        st = gal_ofile_close(&f, !ferror(f.fp));
-    }
-    free(pc);
-    free(pj);
-    return st;
-}
-
-void gal_accuracy_print(FILE *fp, const gal_acc_result *r)
-{
-    fprintf(fp, "%-10s %-22s %-10s %12s %12s %12s  %s\n", "study", "setting", "value", "error %", "wall s", "build s", "");
-    for (int i = 0; i < r->n; i++) {
-        const gal_acc_row *w = r->row + i;
-        fprintf(fp, "%-10s %-22s %-10s %12.4g %12.4g %12.4g  %s\n", gal_acc_study_names[w->study], w->setting,
-                w->value, 100 * w->error, w->wall_time_s, w->build_time_s,
-                w->chosen ? "<- chosen" : w->reference ? "(reference)" : w->failed[0] ? "(failed: see summary.json)" : "");
-    }
-    fprintf(fp, "\ntolerance %.3g%%\n", 100 * r->tolerance);
-    for (int s = 0; s < GAL_ACC_NSTUDY; s++)
-        if (r->study[s].ran) {
-            fprintf(fp, "%-10s %s\n", gal_acc_study_names[s], r->study[s].buys);
-            if (r->study[s].note[0]) fprintf(fp, "%-10s note: %s\n", "", r->study[s].note);
-        }
-    if (isfinite(r->string_hz))
-        fprintf(fp, "string theory: first out-of-plane frequency %.6g Hz (errors of each mesh in summary.json)\n",
-                r->string_hz);
-    fprintf(fp, "total wall time %.3g s\n", r->wall_time_s);
 }

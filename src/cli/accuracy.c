@@ -9,6 +9,7 @@
 #include "cli.h"
 #include "gallop.h"
 #include "gallop/analysis/accuracy.h"
+#include "gallop/output/accreport.h"
 #include "gallop/scene/scene.h"
 
 #define MAX_ARGS 1024

@@ -51,16 +51,11 @@ int gal_cli_simulate(int argc, char **argv)
     }
     gal_sim_measures m;
     st = gal_sim_measure(&r, gal_sim_mid_probe(&r), -1, &m);
-    if (!st) st = gal_mkdirs(outdir);
-    char *p1 = gal_path_join(outdir, "trace.csv"), *p2 = gal_path_join(outdir, "summary.json");
-    if (!st) st = gal_sim_write_trace(p1, &r);
-    if (!st) st = gal_sim_write_summary(p2, &sc, &r);
+    if (!st) st = gal_sim_write(outdir, &sc, &r);
     if (!st) {
         print_run(kind == GAL_MODEL_FULL ? "full" : "reduced", &r, &m);
         printf("files: %s/{trace.csv,summary.json}\n", outdir);
     }
-    free(p1);
-    free(p2);
     gal_sim_result_clear(&r);
     gal_sim_setup_clear(&s);
     return st ? fail("simulate", st) : 0;
@@ -80,7 +75,6 @@ int gal_cli_compare(int argc, char **argv)
     st = gal_sim_run(&s, GAL_MODEL_FULL, &full);
     if (!st) st = gal_sim_run(&s, GAL_MODEL_REDUCED, &red);
     gal_compare_figures c;
-    if (!st) st = gal_mkdirs(outdir);
     if (!st) st = gal_sim_write_compare(outdir, &sc, &full, &red, &c);
     if (!st) {
         gal_sim_measures mf, mr;

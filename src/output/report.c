@@ -1,6 +1,8 @@
 /* report.c: CSV and JSON outputs of the modes stage. */
 #include "gallop/output/report.h"
 #include "gallop/base/core.h"
+#include "gallop/output/json.h"
+#include "gallop/output/outset.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -13,17 +15,16 @@ static double node_twist(const gal_rod *rod, const double *q, int i)
     return 0.5 * (q[3 * rod->nn + a] + q[3 * rod->nn + b]);
 }
 
-static int write_equilibrium(const char *dir, const gal_equilibrium *eq)
+static int write_equilibrium(gal_outset *o, const gal_equilibrium *eq)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "equilibrium.csv");
-    if (st) return st;
+    FILE *fp = gal_outset_open(o, "equilibrium.csv");
+    if (!fp) return GAL_EIO;
     const gal_rod *rod = eq->rod;
     int nel = rod->p.elements;
     double *T = malloc((size_t)nel * sizeof(double));
-    if (!T) { gal_ofile_close(&f, 0); return gal_error(GAL_ENOMEM, "out of memory"); }
+    if (!T) { gal_outset_close(o, fp); return gal_error(GAL_ENOMEM, "out of memory"); }
     gal_rod_tensions(rod, eq->q, T);
-    fprintf(f.fp, "node,s_m,x_m,y_m,z_m,twist_rad,tension_n\n");
+    fprintf(fp, "node,s_m,x_m,y_m,z_m,twist_rad,tension_n\n");
     double s = 0;
     for (int i = 0; i < rod->nn; i++) {
         const double *x = eq->q + 3 * i;
@@ -33,133 +34,131 @@ static int write_equilibrium(const char *dir, const gal_equilibrium *eq)
         }
         /* node tension: mean of the adjacent elements' */
         double t = i == 0 ? T[0] : i == nel ? T[nel - 1] : 0.5 * (T[i - 1] + T[i]);
-        fprintf(f.fp, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", i, s, x[0], x[1], x[2], node_twist(rod, eq->q, i), t);
+        fprintf(fp, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", i, s, x[0], x[1], x[2], node_twist(rod, eq->q, i), t);
     }
     free(T);
-    return gal_ofile_close(&f, 1);
+    return gal_outset_close(o, fp);
 }
 
-static int write_modes_csv(const char *dir, const gal_modes *md)
+static int write_modes_csv(gal_outset *o, const gal_modes *md)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "modes.csv");
-    if (st) return st;
-    fprintf(f.fp, "index,family,symmetry,frequency_hz,period_s,share_vertical,share_horizontal,"
+    FILE *fp = gal_outset_open(o, "modes.csv");
+    if (!fp) return GAL_EIO;
+    fprintf(fp, "index,family,symmetry,frequency_hz,period_s,share_vertical,share_horizontal,"
                   "share_torsional,share_axial,selected\n");
     for (int k = 0; k < md->n; k++) {
         const gal_mode *m = md->mode + k;
-        fprintf(f.fp, "%d,%s,%s,%.9g,%.9g,%.6f,%.6f,%.6f,%.6f,%d\n", k + 1, gal_family_names[m->family],
+        fprintf(fp, "%d,%s,%s,%.9g,%.9g,%.6f,%.6f,%.6f,%.6f,%d\n", k + 1, gal_family_names[m->family],
                 gal_symmetry_names[m->symmetry], m->frequency_hz, m->frequency_hz > 0 ? 1 / m->frequency_hz : INFINITY,
                 m->share[0], m->share[1], m->share[2], m->share[3], m->selected);
     }
-    return gal_ofile_close(&f, 1);
+    return gal_outset_close(o, fp);
 }
 
-static int write_shapes(const char *dir, const gal_equilibrium *eq, const gal_modes *md)
+static int write_shapes(gal_outset *o, const gal_equilibrium *eq, const gal_modes *md)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "shapes.csv");
-    if (st) return st;
+    FILE *fp = gal_outset_open(o, "shapes.csv");
+    if (!fp) return GAL_EIO;
     const gal_rod *rod = eq->rod;
     double *full = calloc((size_t)rod->nq, sizeof(double));
-    if (!full) { gal_ofile_close(&f, 0); return gal_error(GAL_ENOMEM, "out of memory"); }
-    fprintf(f.fp, "# mass-normalized shapes of the selected modes (phi^T M phi = 1): m/sqrt(kg), rad/sqrt(kg m^2)\n");
-    fprintf(f.fp, "mode,family,frequency_hz,node,x_m,z_m,ux,uy,uz,twist\n");
+    if (!full) { gal_outset_close(o, fp); return gal_error(GAL_ENOMEM, "out of memory"); }
+    fprintf(fp, "# mass-normalized shapes of the selected modes (phi^T M phi = 1): m/sqrt(kg), rad/sqrt(kg m^2)\n");
+    fprintf(fp, "mode,family,frequency_hz,node,x_m,z_m,ux,uy,uz,twist\n");
     for (int k = 0; k < md->n; k++) {
         const gal_mode *m = md->mode + k;
         if (!m->selected) continue;
         for (int j = 0; j < rod->nq; j++) full[j] = 0;
         gal_rod_scatter(rod, md->shape + (size_t)k * md->ndof, full);
         for (int i = 0; i < rod->nn; i++)
-            fprintf(f.fp, "%d,%s,%.9g,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", k + 1, gal_family_names[m->family],
+            fprintf(fp, "%d,%s,%.9g,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", k + 1, gal_family_names[m->family],
                     m->frequency_hz, i, eq->q[3 * i], eq->q[3 * i + 2], full[3 * i], full[3 * i + 1],
                     full[3 * i + 2], node_twist(rod, full, i));
-        fprintf(f.fp, "\n\n"); /* gnuplot data blocks, one per mode */
+        fprintf(fp, "\n\n"); /* gnuplot data blocks, one per mode */
     }
     free(full);
-    return gal_ofile_close(&f, 1);
+    return gal_outset_close(o, fp);
 }
 
-static int write_summary(const char *dir, const gal_scene *sc, const gal_equilibrium *eq,
+static int write_summary(gal_outset *o, const gal_scene *sc, const gal_equilibrium *eq,
                          const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall)
 {
-    gal_ofile f;
-    int st = gal_ofile_open_in(&f, dir, "summary.json");
-    if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "command", "modes");
-    gal_json_kv_str(&j, "scene", sc->path);
-    gal_json_kv_num(&j, "sag_m", eq->sag);
-    gal_json_kv_num(&j, "horizontal_tension_n", eq->horizontal_tension);
-    gal_json_kv_num(&j, "unstretched_length_m", eq->unstretched_length);
-    gal_json_kv_num(&j, "tension_left_n", eq->tension_left);
-    gal_json_kv_num(&j, "tension_right_n", eq->tension_right);
-    gal_json_kv_num(&j, "tension_max_n", eq->tension_max);
-    gal_json_kv_int(&j, "elements", eq->rod->p.elements);
-    gal_json_kv_int(&j, "dofs", eq->rod->ndof);
-    gal_json_kv_int(&j, "newton_iterations", eq->newton_iterations);
-    gal_json_kv_num(&j, "wall_time_s", wall);
-    gal_json_key(&j, "counters");
-    gal_json_obj_begin(&j);
-    gal_json_kv_int(&j, "length_iterations", eq->length_iterations);
-    gal_json_kv_int(&j, "load_steps", eq->load_steps);
-    gal_json_kv_int(&j, "statics_factorizations", eq->factorizations);
-    gal_json_kv_num(&j, "statics_wall_time_s", eq->wall_time_s);
-    gal_json_kv_int(&j, "modes_computed", md->n);
-    gal_json_kv_int(&j, "arpack_rounds", md->rounds);
-    gal_json_kv_int(&j, "arpack_operator_applications", md->op_applications);
-    gal_json_kv_int(&j, "modes_factorizations", md->factorizations);
-    gal_json_kv_num(&j, "modes_wall_time_s", md->wall_time_s);
-    gal_json_obj_end(&j);
-    gal_json_key(&j, "effects");
-    gal_json_obj_begin(&j);
-    for (int e = 0; e < GAL_FX_COUNT; e++) gal_json_kv_str(&j, gal_effect_names[e], sc->effect[e] ? "on" : "off");
-    gal_json_obj_end(&j);
-    gal_json_key(&j, "families");
-    gal_json_obj_begin(&j);
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "modes");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_num(j, "sag_m", eq->sag);
+    gal_json_kv_num(j, "horizontal_tension_n", eq->horizontal_tension);
+    gal_json_kv_num(j, "unstretched_length_m", eq->unstretched_length);
+    gal_json_kv_num(j, "tension_left_n", eq->tension_left);
+    gal_json_kv_num(j, "tension_right_n", eq->tension_right);
+    gal_json_kv_num(j, "tension_max_n", eq->tension_max);
+    gal_json_kv_int(j, "elements", eq->rod->p.elements);
+    gal_json_kv_int(j, "dofs", eq->rod->ndof);
+    gal_json_kv_int(j, "newton_iterations", eq->newton_iterations);
+    gal_json_kv_num(j, "wall_time_s", wall);
+    gal_json_key(j, "counters");
+    gal_json_obj_begin(j);
+    gal_json_kv_int(j, "length_iterations", eq->length_iterations);
+    gal_json_kv_int(j, "load_steps", eq->load_steps);
+    gal_json_kv_int(j, "statics_factorizations", eq->factorizations);
+    gal_json_kv_num(j, "statics_wall_time_s", eq->wall_time_s);
+    gal_json_kv_int(j, "modes_computed", md->n);
+    gal_json_kv_int(j, "arpack_rounds", md->rounds);
+    gal_json_kv_int(j, "arpack_operator_applications", md->op_applications);
+    gal_json_kv_int(j, "modes_factorizations", md->factorizations);
+    gal_json_kv_num(j, "modes_wall_time_s", md->wall_time_s);
+    gal_json_obj_end(j);
+    gal_json_key(j, "effects");
+    gal_json_obj_begin(j);
+    for (int e = 0; e < GAL_FX_COUNT; e++) gal_json_kv_str(j, gal_effect_names[e], sc->effect[e] ? "on" : "off");
+    gal_json_obj_end(j);
+    gal_json_key(j, "families");
+    gal_json_obj_begin(j);
     for (int fam = 0; fam < 3; fam++) {
-        gal_json_key(&j, gal_family_names[fam]);
-        gal_json_obj_begin(&j);
-        gal_json_kv_int(&j, "asked", want[fam]);
-        gal_json_kv_int(&j, "found", md->selected[fam]);
-        gal_json_obj_end(&j);
+        gal_json_key(j, gal_family_names[fam]);
+        gal_json_obj_begin(j);
+        gal_json_kv_int(j, "asked", want[fam]);
+        gal_json_kv_int(j, "found", md->selected[fam]);
+        gal_json_obj_end(j);
     }
-    gal_json_obj_end(&j);
-    gal_json_key(&j, "frequencies");
-    gal_json_arr_begin(&j);
+    gal_json_obj_end(j);
+    gal_json_key(j, "frequencies");
+    gal_json_arr_begin(j);
     for (int k = 0; k < md->n; k++)
-        if (md->mode[k].selected) gal_json_num(&j, md->mode[k].frequency_hz);
-    gal_json_arr_end(&j);
-    gal_json_key(&j, "modes");
-    gal_json_arr_begin(&j);
+        if (md->mode[k].selected) gal_json_num(j, md->mode[k].frequency_hz);
+    gal_json_arr_end(j);
+    gal_json_key(j, "modes");
+    gal_json_arr_begin(j);
     for (int k = 0; k < md->n; k++) {
         const gal_mode *m = md->mode + k;
         if (!m->selected) continue;
-        gal_json_obj_begin(&j);
-        gal_json_kv_int(&j, "index", k + 1);
-        gal_json_kv_str(&j, "family", gal_family_names[m->family]);
-        gal_json_kv_str(&j, "symmetry", gal_symmetry_names[m->symmetry]);
-        gal_json_kv_num(&j, "frequency_hz", m->frequency_hz);
-        gal_json_kv_num(&j, "share_vertical", m->share[GAL_FAMILY_VERTICAL]);
-        gal_json_kv_num(&j, "share_horizontal", m->share[GAL_FAMILY_HORIZONTAL]);
-        gal_json_kv_num(&j, "share_torsional", m->share[GAL_FAMILY_TORSIONAL]);
-        gal_json_kv_num(&j, "share_axial", m->share[GAL_FAMILY_AXIAL]);
-        gal_json_obj_end(&j);
+        gal_json_obj_begin(j);
+        gal_json_kv_int(j, "index", k + 1);
+        gal_json_kv_str(j, "family", gal_family_names[m->family]);
+        gal_json_kv_str(j, "symmetry", gal_symmetry_names[m->symmetry]);
+        gal_json_kv_num(j, "frequency_hz", m->frequency_hz);
+        gal_json_kv_num(j, "share_vertical", m->share[GAL_FAMILY_VERTICAL]);
+        gal_json_kv_num(j, "share_horizontal", m->share[GAL_FAMILY_HORIZONTAL]);
+        gal_json_kv_num(j, "share_torsional", m->share[GAL_FAMILY_TORSIONAL]);
+        gal_json_kv_num(j, "share_axial", m->share[GAL_FAMILY_AXIAL]);
+        gal_json_obj_end(j);
     }
-    gal_json_arr_end(&j);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, 1);
+    gal_json_arr_end(j);
+    return GAL_OK;
 }
 
 int gal_report_modes(const char *dir, const gal_scene *sc, const gal_equilibrium *eq,
                      const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall)
 {
-    int st = gal_mkdirs(dir);
-    if (!st) st = write_equilibrium(dir, eq);
-    if (!st) st = write_modes_csv(dir, md);
-    if (!st) st = write_shapes(dir, eq, md);
-    if (!st) st = write_summary(dir, sc, eq, md, want, wall); /* last: its presence means complete */
+    gal_outset *o;
+    int st = gal_outset_begin(&o, dir, "modes");
+    if (!st) st = gal_outset_scene(o, sc);
+    if (!st) st = write_equilibrium(o, eq);
+    if (!st) st = write_modes_csv(o, md);
+    if (!st) st = write_shapes(o, eq, md);
+    if (!st) st = write_summary(o, sc, eq, md, want, wall);
+    if (!st) st = gal_outset_commit(o); /* summary.json last: the commit record */
+    gal_outset_free(o);
     return st;
 }
 

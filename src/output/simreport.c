@@ -1,125 +1,17 @@
-/* simreport.c: what the spectral module measures on the traces of a run (issue 5): dominant
- * frequencies, amplitudes, orbit ellipse, time to steady galloping, support tensions; the
- * summary.json of `gallop simulate` and the files of `gallop compare`. */
+/* simreport.c: the files of a galloping run, each command's as one output set (outset.h):
+ * trace.csv and summary.json of `gallop simulate` (the measures of analysis/measure.c),
+ * compare.csv and summary.json of `gallop compare`. */
 #include "gallop/output/simreport.h"
 #include "gallop/base/core.h"
-#include "gallop/analysis/spectrum.h"
+#include "gallop/output/json.h"
+#include "gallop/output/ofile.h"
+#include "gallop/output/outset.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 static const char *const comp_names[4] = {"horizontal", "vertical", "along", "twist"};
-
-/* column c of probe k over samples [i0, n) */
-static void column(const gal_sim_result *r, int k, int c, long i0, double *out)
-{
-    int w = 4 * r->nprobe;
-    for (long i = i0; i < r->nsamples; i++) out[i - i0] = r->trace[(size_t)i * w + 4 * k + c];
-}
-
-int gal_sim_measure(const gal_sim_result *r, int k, double from, gal_sim_measures *m)
-{
-    memset(m, 0, sizeof *m);
-    long n = r->nsamples;
-    if (n < 64) return gal_error(GAL_EINPUT, "simulate: %ld samples are too few to measure (at least 64)", n);
-    double dt = r->dt_out;
-    double *x = malloc((size_t)n * sizeof(double)), *env = malloc((size_t)n * sizeof(double));
-    if (!x || !env) { free(x); free(env); return gal_error(GAL_ENOMEM, "out of memory"); }
-    int st = GAL_OK;
-    /* time to steady galloping from the envelope of the vertical displacement, its slow part (the
-     * mean lift and drag change as the motion grows) removed by a running mean over one period of
-     * the dominant frequency of the second half */
-    column(r, k, 1, 0, x);
-    double level = 0, ts = NAN, fdom = NAN;
-    {
-        long h0 = n / 2;
-        gal_welch *w0 = gal_spectrum_welch_alloc(gal_spectrum_segment_choose((size_t)(n - h0)));
-        gal_measures g0;
-        if (w0 && gal_spectrum_measure(w0, x + h0, (size_t)(n - h0), dt, 1, NULL, &g0) == GAL_OK) fdom = g0.frequency;
-        gal_spectrum_welch_free(w0);
-    }
-    if (isfinite(fdom) && fdom > 0) {
-        long wlen = (long)floor(1.0 / (fdom * dt) + 0.5);
-        if (wlen >= 2 && wlen < n / 4) {
-            /* centred running mean by a prefix sum (env is scratch) */
-            double acc = 0;
-            env[0] = 0;
-            for (long i = 0; i < n; i++) acc += x[i], env[i] = acc;
-            double *y = malloc((size_t)n * sizeof(double));
-            if (y) {
-                for (long i = 0; i < n; i++) {
-                    long a = i - wlen / 2, b = a + wlen - 1;
-                    if (a < 0) a = 0, b = wlen - 1;
-                    if (b > n - 1) b = n - 1, a = n - wlen;
-                    double sum = env[b] - (a > 0 ? env[a - 1] : 0);
-                    y[i] = x[i] - sum / wlen;
-                }
-                memcpy(x, y, (size_t)n * sizeof(double));
-                free(y);
-            }
-        }
-    }
-    gal_hilbert *h = gal_spectrum_hilbert_alloc((size_t)n);
-    m->rise_time_s = NAN;
-    if (h && gal_spectrum_envelope(h, x, 2.0, env) == GAL_OK) {
-        gal_spectrum_steady_time(env, (size_t)n, dt, 0.05, &ts, &level);
-        /* first time the envelope reaches 90% of its final level: robust to a final level that
-         * still breathes by a few per cent */
-        if (level > 0)
-            for (long i = 0; i < n; i++)
-                if (env[i] >= 0.9 * level) { m->rise_time_s = i * dt; break; }
-    }
-    gal_spectrum_hilbert_free(h);
-    m->time_to_steady_s = ts;
-    /* the steady part: after `from` when given, else after the time to steady, but at least the
-     * last third of the run */
-    double t0 = from >= 0 ? from : (isfinite(ts) ? fmin(ts, (2.0 / 3.0) * r->time[n - 1]) : 0.5 * r->time[n - 1]);
-    long i0 = (long)floor(t0 / dt);
-    if (n - i0 < 64) i0 = n - 64;
-    m->steady_from_s = i0 * dt;
-    long ns = n - i0;
-    gal_welch *w = gal_spectrum_welch_alloc(gal_spectrum_segment_choose((size_t)ns));
-    if (!w) { free(x); free(env); return GAL_ENOMEM; }
-    for (int c = 0; c < 4; c++) {
-        column(r, k, c, i0, x);
-        gal_measures gm;
-        if ((st = gal_spectrum_measure(w, x, (size_t)ns, dt, 3, NULL, &gm))) break;
-        m->frequency_hz[c] = gm.frequency;
-        m->peak_to_peak[c] = gm.peak_to_peak;
-        m->rms[c] = gm.rms;
-        m->mean[c] = gm.mean;
-    }
-    gal_spectrum_welch_free(w);
-    if (!st) {
-        double *y = malloc((size_t)ns * sizeof(double));
-        if (y) {
-            column(r, k, 0, i0, y);
-            column(r, k, 1, i0, x);
-            gal_orbit o;
-            if (gal_spectrum_orbit(y, x, (size_t)ns, &o) == GAL_OK)
-                m->orbit_major = o.major, m->orbit_minor = o.minor, m->orbit_tilt_deg = o.tilt_deg;
-            free(y);
-        }
-    }
-    m->tension_min = INFINITY, m->tension_max = -INFINITY;
-    for (long i = 0; i < n; i++)
-        for (int s = 0; s < 2; s++) {
-            m->tension_min = fmin(m->tension_min, r->tension[2 * i + s]);
-            m->tension_max = fmax(m->tension_max, r->tension[2 * i + s]);
-        }
-    free(x);
-    free(env);
-    return st;
-}
-
-int gal_sim_mid_probe(const gal_sim_result *r)
-{
-    int best = 0;
-    for (int k = 1; k < r->nprobe; k++)
-        if (fabs(r->probe[k] - 0.5) < fabs(r->probe[best] - 0.5)) best = k;
-    return best;
-}
 
 static void json_measures(gal_json *j, const gal_sim_measures *m)
 {
@@ -180,34 +72,71 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     gal_json_obj_end(j);
 }
 
-int gal_sim_write_summary(const char *path, const gal_scene *sc, const gal_sim_result *r)
+static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *r)
+{
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "simulate");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_num(j, "duration_s", r->time[r->nsamples - 1]);
+    gal_json_kv_num(j, "output_interval_s", r->dt_out);
+    int mid = gal_sim_mid_probe(r), st;
+    gal_sim_measures mm;
+    if ((st = gal_sim_measure(r, mid, -1, &mm))) return st;
+    json_run(j, r, &mm);
+    gal_json_key(j, "probes");
+    gal_json_arr_begin(j);
+    for (int k = 0; k < r->nprobe; k++) {
+        gal_sim_measures m;
+        if ((st = gal_sim_measure(r, k, -1, &m))) return st;
+        gal_json_obj_begin(j);
+        gal_json_kv_num(j, "position", r->probe[k]);
+        json_measures(j, &m);
+        gal_json_obj_end(j);
+    }
+    gal_json_arr_end(j);
+    return GAL_OK;
+}
+
+/* the trace of a run, one line per sample */
+static void trace_csv(FILE *fp, const gal_sim_result *res)
+{
+    fprintf(fp, "# %s model; displacements from the equilibrium at the probes (fractions of the span)\n",
+            res->kind == GAL_MODEL_FULL ? "full" : "reduced");
+    fprintf(fp, "time_s");
+    for (int k = 0; k < res->nprobe; k++) {
+        double a = res->probe[k];
+        fprintf(fp, ",p%g_horizontal_m,p%g_vertical_m,p%g_along_m,p%g_twist_deg", a, a, a, a);
+    }
+    fprintf(fp, ",tension_left_n,tension_right_n\n");
+    for (long i = 0; i < res->nsamples; i++) {
+        fprintf(fp, "%.6f", res->time[i]);
+        for (int c = 0; c < 4 * res->nprobe; c++) fprintf(fp, ",%.8g", res->trace[(size_t)i * 4 * res->nprobe + c]);
+        fprintf(fp, ",%.8g,%.8g\n", res->tension[2 * i], res->tension[2 * i + 1]);
+    }
+}
+
+int gal_sim_write(const char *dir, const gal_scene *sc, const gal_sim_result *r)
+{
+    gal_outset *o;
+    int st = gal_outset_begin(&o, dir, "simulate");
+    if (!st) st = gal_outset_scene(o, sc);
+    FILE *fp = st ? NULL : gal_outset_open(o, "trace.csv");
+    if (!st && !fp) st = GAL_EIO;
+    if (fp) trace_csv(fp, r), st = gal_outset_close(o, fp);
+    if (!st) st = write_summary(o, sc, r);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
+    return st;
+}
+
+int gal_sim_write_trace(const char *path, const gal_sim_result *res)
 {
     gal_ofile f;
     int st = gal_ofile_open(&f, path);
     if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "command", "simulate");
-    gal_json_kv_str(&j, "scene", sc->path);
-    gal_json_kv_num(&j, "duration_s", r->time[r->nsamples - 1]);
-    gal_json_kv_num(&j, "output_interval_s", r->dt_out);
-    int mid = gal_sim_mid_probe(r);
-    gal_sim_measures mm;
-    if ((st = gal_sim_measure(r, mid, -1, &mm))) { gal_ofile_close(&f, 0); return st; }
-    json_run(&j, r, &mm);
-    gal_json_key(&j, "probes");
-    gal_json_arr_begin(&j);
-    for (int k = 0; k < r->nprobe; k++) {
-        gal_sim_measures m;
-        if ((st = gal_sim_measure(r, k, -1, &m))) break;
-        gal_json_obj_begin(&j);
-        gal_json_kv_num(&j, "position", r->probe[k]);
-        json_measures(&j, &m);
-        gal_json_obj_end(&j);
-    }
-    gal_json_arr_end(&j);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, st == GAL_OK);
+    trace_csv(f.fp, res);
+    return gal_ofile_close(&f, 1);
 }
 
 static double relerr(double a, double b)
@@ -215,62 +144,83 @@ static double relerr(double a, double b)
     return fabs(a - b) / fmax(fabs(b), 1e-300);
 }
 
-int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_result *full,
-                          const gal_sim_result *red, gal_compare_figures *out)
+/* the figures of the comparison at mid-span over the full model's steady window */
+static int compare_figures(const gal_sim_result *full, const gal_sim_result *red, gal_sim_measures *mf,
+                           gal_sim_measures *mr, gal_compare_figures *c)
 {
-    int kf = gal_sim_mid_probe(full), kr = gal_sim_mid_probe(red);
-    gal_sim_measures mf, mr;
-    int st = gal_sim_measure(full, kf, -1, &mf);
-    if (!st) st = gal_sim_measure(red, kr, mf.steady_from_s, &mr); /* the same steady window */
+    int st = gal_sim_measure(full, gal_sim_mid_probe(full), -1, mf);
+    if (!st) st = gal_sim_measure(red, gal_sim_mid_probe(red), mf->steady_from_s, mr); /* the same window */
     if (st) return st;
-    gal_compare_figures c;
-    c.frequency_error = relerr(mr.frequency_hz[1], mf.frequency_hz[1]);
-    c.err_vertical = relerr(mr.peak_to_peak[1], mf.peak_to_peak[1]);
-    c.err_horizontal = relerr(mr.peak_to_peak[0], mf.peak_to_peak[0]);
-    c.err_twist = relerr(mr.peak_to_peak[3], mf.peak_to_peak[3]);
-    c.amplitude_error = fmax(c.err_vertical, fmax(c.err_horizontal, c.err_twist));
+    c->frequency_error = relerr(mr->frequency_hz[1], mf->frequency_hz[1]);
+    c->err_vertical = relerr(mr->peak_to_peak[1], mf->peak_to_peak[1]);
+    c->err_horizontal = relerr(mr->peak_to_peak[0], mf->peak_to_peak[0]);
+    c->err_twist = relerr(mr->peak_to_peak[3], mf->peak_to_peak[3]);
+    c->amplitude_error = fmax(c->err_vertical, fmax(c->err_horizontal, c->err_twist));
     double dur = full->time[full->nsamples - 1];
-    c.speedup = (full->wall_time_s / dur) / (red->wall_time_s / dur);
-    if (out) *out = c;
+    c->speedup = (full->wall_time_s / dur) / (red->wall_time_s / dur);
+    return GAL_OK;
+}
 
-    gal_ofile f;
-    st = gal_ofile_open_in(&f, dir, "compare.csv");
-    if (st) return st;
+static int write_compare_csv(gal_outset *o, const gal_sim_result *full, const gal_sim_result *red)
+{
+    FILE *fp = gal_outset_open(o, "compare.csv");
+    if (!fp) return GAL_EIO;
+    int kf = gal_sim_mid_probe(full), kr = gal_sim_mid_probe(red);
     int wf = 4 * full->nprobe, wr = 4 * red->nprobe;
-    fprintf(f.fp, "time_s,full_vertical_m,reduced_vertical_m,full_horizontal_m,reduced_horizontal_m,"
-                  "full_twist_deg,reduced_twist_deg\n");
+    fprintf(fp, "time_s,full_vertical_m,reduced_vertical_m,full_horizontal_m,reduced_horizontal_m,"
+                "full_twist_deg,reduced_twist_deg\n");
     long n = full->nsamples < red->nsamples ? full->nsamples : red->nsamples;
     for (long i = 0; i < n; i++) {
         const double *a = full->trace + (size_t)i * wf + 4 * kf, *b = red->trace + (size_t)i * wr + 4 * kr;
-        fprintf(f.fp, "%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", full->time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
+        fprintf(fp, "%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", full->time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
     }
-    if ((st = gal_ofile_close(&f, 1))) return st;
+    return gal_outset_close(o, fp);
+}
 
-    st = gal_ofile_open_in(&f, dir, "summary.json");
+static int write_compare_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *full,
+                                 const gal_sim_result *red, const gal_sim_measures *mf, const gal_sim_measures *mr,
+                                 const gal_compare_figures *c)
+{
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "compare");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_num(j, "duration_s", full->time[full->nsamples - 1]);
+    gal_json_kv_num(j, "steady_from_s", mf->steady_from_s);
+    gal_json_key(j, "full");
+    gal_json_obj_begin(j);
+    json_run(j, full, mf);
+    gal_json_obj_end(j);
+    gal_json_key(j, "reduced");
+    gal_json_obj_begin(j);
+    json_run(j, red, mr);
+    gal_json_obj_end(j);
+    gal_json_kv_num(j, "frequency_error", c->frequency_error);
+    gal_json_kv_num(j, "amplitude_error", c->amplitude_error);
+    gal_json_key(j, "amplitude_errors");
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "vertical", c->err_vertical);
+    gal_json_kv_num(j, "horizontal", c->err_horizontal);
+    gal_json_kv_num(j, "twist", c->err_twist);
+    gal_json_obj_end(j);
+    gal_json_kv_num(j, "speedup", c->speedup);
+    return GAL_OK;
+}
+
+int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_result *full,
+                          const gal_sim_result *red, gal_compare_figures *out)
+{
+    gal_sim_measures mf, mr;
+    gal_compare_figures c;
+    int st = compare_figures(full, red, &mf, &mr, &c);
     if (st) return st;
-    gal_json j;
-    gal_json_begin(&j, f.fp);
-    gal_json_kv_str(&j, "command", "compare");
-    gal_json_kv_str(&j, "scene", sc->path);
-    gal_json_kv_num(&j, "duration_s", dur);
-    gal_json_kv_num(&j, "steady_from_s", mf.steady_from_s);
-    gal_json_key(&j, "full");
-    gal_json_obj_begin(&j);
-    json_run(&j, full, &mf);
-    gal_json_obj_end(&j);
-    gal_json_key(&j, "reduced");
-    gal_json_obj_begin(&j);
-    json_run(&j, red, &mr);
-    gal_json_obj_end(&j);
-    gal_json_kv_num(&j, "frequency_error", c.frequency_error);
-    gal_json_kv_num(&j, "amplitude_error", c.amplitude_error);
-    gal_json_key(&j, "amplitude_errors");
-    gal_json_obj_begin(&j);
-    gal_json_kv_num(&j, "vertical", c.err_vertical);
-    gal_json_kv_num(&j, "horizontal", c.err_horizontal);
-    gal_json_kv_num(&j, "twist", c.err_twist);
-    gal_json_obj_end(&j);
-    gal_json_kv_num(&j, "speedup", c.speedup);
-    gal_json_end(&j);
-    return gal_ofile_close(&f, 1);
+    if (out) *out = c;
+    gal_outset *o;
+    st = gal_outset_begin(&o, dir, "compare");
+    if (!st) st = gal_outset_scene(o, sc);
+    if (!st) st = write_compare_csv(o, full, red);
+    if (!st) st = write_compare_summary(o, sc, full, red, &mf, &mr, &c);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
+    return st;
 }

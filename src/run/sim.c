@@ -315,24 +315,3 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
     free(u);
     return st;
 }
-
-int gal_sim_write_trace(const char *path, const gal_sim_result *res)
-{
-    gal_ofile f;
-    int st = gal_ofile_open(&f, path);
-    if (st) return st;
-    fprintf(f.fp, "# %s model; displacements from the equilibrium at the probes (fractions of the span)\n",
-            res->kind == GAL_MODEL_FULL ? "full" : "reduced");
-    fprintf(f.fp, "time_s");
-    for (int k = 0; k < res->nprobe; k++) {
-        double a = res->probe[k];
-        fprintf(f.fp, ",p%g_horizontal_m,p%g_vertical_m,p%g_along_m,p%g_twist_deg", a, a, a, a);
-    }
-    fprintf(f.fp, ",tension_left_n,tension_right_n\n");
-    for (long i = 0; i < res->nsamples; i++) {
-        fprintf(f.fp, "%.6f", res->time[i]);
-        for (int c = 0; c < 4 * res->nprobe; c++) fprintf(f.fp, ",%.8g", res->trace[(size_t)i * 4 * res->nprobe + c]);
-        fprintf(f.fp, ",%.8g,%.8g\n", res->tension[2 * i], res->tension[2 * i + 1]);
-    }
-    return gal_ofile_close(&f, 1);
-}

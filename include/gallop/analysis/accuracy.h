@@ -6,8 +6,6 @@
 #ifndef GALLOP_ACCURACY_H
 #define GALLOP_ACCURACY_H
 
-#include <stdio.h>
-
 #include "gallop/scene/scene.h"
 
 #ifdef __cplusplus
@@ -79,11 +77,6 @@ void gal_accuracy_default_opts(gal_acc_opts *o);
  * A non-reference setting that fails is kept as a row with error = +inf (never chosen). */
 int gal_accuracy_run(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);
 void gal_accuracy_clear(gal_acc_result *r);
-
-/* DIR/accuracy.csv (study,setting,value,error,wall_time_s,chosen) and DIR/summary.json. */
-int gal_accuracy_write(const char *dir, const gal_scene *sc, const gal_acc_result *r);
-/* A table on fp. */
-void gal_accuracy_print(FILE *fp, const gal_acc_result *r);
 
 #ifdef __cplusplus
 }

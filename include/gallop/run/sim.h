@@ -51,8 +51,6 @@ int gal_sim_setup_init(gal_sim_setup *s, const gal_scene *sc, int need_modes);
 void gal_sim_setup_clear(gal_sim_setup *s);
 int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res);
 void gal_sim_result_clear(gal_sim_result *res);
-/* trace.csv of a run (temporary file, then rename). */
-int gal_sim_write_trace(const char *path, const gal_sim_result *res);
 
 #ifdef __cplusplus
 }

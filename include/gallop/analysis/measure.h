@@ -1,0 +1,32 @@
+/* measure.h: measures of a run's traces (spectral module): dominant frequencies, amplitudes,
+ * orbit ellipse, time to steady galloping, support tensions. */
+#ifndef GALLOP_ANALYSIS_MEASURE_H
+#define GALLOP_ANALYSIS_MEASURE_H
+
+#include "gallop/run/sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct gal_sim_measures {
+    double time_to_steady_s;      /* vertical envelope within 5% of its final level from then on */
+    double rise_time_s;           /* vertical envelope first at 90% of its final level */
+    double steady_from_s;         /* start of the window the measures are taken over */
+    double frequency_hz[4];       /* horizontal, vertical, along, twist */
+    double peak_to_peak[4];       /* m, m, m, deg */
+    double rms[4], mean[4];
+    double orbit_major, orbit_minor, orbit_tilt_deg; /* m, m, deg */
+    double tension_min, tension_max;                 /* N, supports */
+} gal_sim_measures;
+
+/* Measures at probe k over the steady part (from `from` s, or detected when from < 0). */
+int gal_sim_measure(const gal_sim_result *r, int k, double from, gal_sim_measures *m);
+/* The probe nearest to mid-span. */
+int gal_sim_mid_probe(const gal_sim_result *r);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
