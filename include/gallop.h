@@ -15,6 +15,7 @@
 #include "gallop/model/model.h"
 #include "gallop/model/tables.h"
 #include "gallop/model/damping.h"
+#include "gallop/model/force.h"
 /* rod: the discrete Cosserat rod */
 #include "gallop/rod/rod.h"
 /* statics: the sagged equilibrium */

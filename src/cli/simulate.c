@@ -2,6 +2,7 @@
  * `gallop compare SCENE [-o DIR]` (issues 5, 6): trace.csv and summary.json of a galloping run;
  * both models on the same equilibrium, loads and wind, compare.csv and summary.json. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"

@@ -8,18 +8,12 @@
 #ifndef GALLOP_DYNAMICS_H
 #define GALLOP_DYNAMICS_H
 
+#include "gallop/model/force.h"
 #include "gallop/rod/rod.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* External generalized forces: add F(t, q, v) to f (configuration-sized; entries of fixed dofs are
- * ignored). v is configuration-sized too (zero at fixed dofs). Returns a status. */
-typedef struct gal_force {
-    int (*eval)(void *ctx, double t, const double *q, const double *v, double *f);
-    void *ctx;
-} gal_force;
 
 typedef struct gal_dyn_opts {
     double h;            /* s, time step */

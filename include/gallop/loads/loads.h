@@ -13,8 +13,7 @@
 #define GALLOP_LOADS_H
 
 #include "gallop/loads/aero.h"
-#include "gallop/full/dynamics.h"
-#include "gallop/reduced/rdyn.h"
+#include "gallop/model/force.h"
 #include "gallop/rod/rod.h"
 
 #ifdef __cplusplus

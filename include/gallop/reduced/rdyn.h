@@ -10,21 +10,13 @@
 
 #include <gsl/gsl_odeiv2.h>
 
+#include "gallop/model/force.h"
 #include "gallop/reduced/reduced.h"
 #include "gallop/rod/rod.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* A distributed load per unit length at a point of the span (N/m and N m/m): position r, velocity
- * rdot, unit tangent tan, section reference direction d1, at time t and span abscissa x. Both models
- * evaluate their loads through it. */
-typedef struct gal_pointload {
-    int (*eval)(void *ctx, double t, double x, const double r[3], const double rdot[3],
-                const double tan[3], const double d1[3], double f[3], double *m);
-    void *ctx;
-} gal_pointload;
 
 typedef struct gal_rdyn {
     const gal_reduced *rm;
