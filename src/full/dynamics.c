@@ -40,8 +40,9 @@ gal_dyn *gal_dyn_free(gal_dyn *d)
     return NULL;
 }
 
-/* Cv = C v over free dofs (v configuration-sized), C = alpha M + beta K0 */
-static void damping_force(gal_dyn *d, const double *vq, double *Cv)
+/* Structural damping, C v = alpha M v + beta K0 v over the free dofs (v free-dof-sized; d->tmp is
+ * scratch): the one place where the Rayleigh definition is evaluated. */
+static void damping_force(gal_dyn *d, const double *v, double *Cv)
 {
     const gal_rod *rod = d->rod;
     int n = rod->ndof;
@@ -49,10 +50,9 @@ static void damping_force(gal_dyn *d, const double *vq, double *Cv)
         memset(Cv, 0, (size_t)n * sizeof(double));
         return;
     }
-    gal_rod_gather(rod, vq, d->tmp);
-    gal_csc_symv(d->K0, d->tmp, Cv);
-    gal_rod_mass_mult(rod, d->tmp, d->r); /* r is scratch here */
-    for (int j = 0; j < n; j++) Cv[j] = d->o.rayleigh_stiffness * Cv[j] + d->o.rayleigh_mass * d->r[j];
+    gal_csc_symv(d->K0, v, Cv);
+    gal_rod_mass_mult(rod, v, d->tmp);
+    for (int j = 0; j < n; j++) Cv[j] = d->o.rayleigh_stiffness * Cv[j] + d->o.rayleigh_mass * d->tmp[j];
 }
 
 static int external(gal_dyn *d, double t, const double *q, const double *v, double *f)
@@ -104,7 +104,8 @@ gal_dyn *gal_dyn_alloc(const gal_rod *rod, const double *q0, const double *v0, c
     if (gal_rod_eval(rod, q0, NULL, d->fint0, d->K0) != GAL_OK) return gal_dyn_free(d);
     if (external(d, 0.0, d->q, d->v, d->fext0) != GAL_OK) return gal_dyn_free(d);
     /* M a0 = F0 - g(q0) - C v0 */
-    damping_force(d, d->v, d->Cv);
+    gal_rod_gather(rod, d->v, d->dq);
+    damping_force(d, d->dq, d->Cv);
     for (int j = 0; j < n; j++) {
         int k = rod->free_q[j];
         d->dq[j] = d->fext0[k] - d->fint0[k] - d->Cv[j];
@@ -132,89 +133,116 @@ double gal_dyn_energy(const gal_dyn *d)
     return T + U;
 }
 
-/* One step of size h from the current state; on failure the state is unchanged. */
-static int try_step(gal_dyn *d, double h)
+/* The predictor (constant acceleration) of a step of size h. */
+static void predict(gal_dyn *d, double h)
 {
     const gal_rod *rod = d->rod;
-    int n = rod->ndof, nq = rod->nq, st;
-    double am = d->am, af = d->af, be = d->beta, ga = d->gamma;
-    double t1 = d->t + h;
-    /* predictor: constant acceleration */
+    int n = rod->ndof, nq = rod->nq;
+    double be = d->beta;
     memcpy(d->q1, d->q, (size_t)nq * sizeof(double));
     memcpy(d->a1, d->a, (size_t)nq * sizeof(double));
     for (int j = 0; j < n; j++) {
         int k = rod->free_q[j];
         d->q1[k] = d->q[k] + h * d->v[k] + h * h * ((0.5 - be) * d->a[k] + be * d->a1[k]);
     }
-    double cm = (1 - am) / (be * h * h), cc = (1 - af) * ga / (be * h);
+}
+
+/* The convergence test's force tolerance, N. */
+static double force_tolerance(const gal_dyn *d)
+{
+    const gal_rod *rod = d->rod;
+    int n = rod->ndof;
     double scale = 0;
     for (int j = 0; j < n; j++) scale = fmax(scale, fabs(d->fint0[rod->free_q[j]]) + fabs(d->fext0[rod->free_q[j]]));
     /* a force scale for the convergence test: the weight of one node at least */
     for (int j = 0; j < n; j++) scale = fmax(scale, d->mdiag[j] * 9.81);
     /* not below the round-off of the elastic forces: positions known to eps L, times the axial
      * stiffness of an element EA / l0 */
-    double tol = fmax(d->o.newton_tol * scale, 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) *
-                                                   rod->p.EA / rod->l0[0]);
+    return fmax(d->o.newton_tol * scale, 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) *
+                                             rod->p.EA / rod->l0[0]);
+}
+
+/* The residual R at the iterate q1 of a step of size h into d->r (a1, v1, the elastic forces
+ * fint1 and the tangent in d->S, the loads fext1 evaluated on the way); its max norm in *rn. */
+static int residual(gal_dyn *d, double h, double t1, double *rn)
+{
+    const gal_rod *rod = d->rod;
+    int n = rod->ndof, st;
+    double am = d->am, af = d->af, be = d->beta, ga = d->gamma;
+    /* a1, v1 from q1 */
+    for (int j = 0; j < n; j++) {
+        int k = rod->free_q[j];
+        d->a1[k] = (d->q1[k] - d->q[k] - h * d->v[k]) / (be * h * h) - (0.5 - be) / be * d->a[k];
+        d->v1[k] = d->v[k] + h * ((1 - ga) * d->a[k] + ga * d->a1[k]);
+    }
+    if ((st = gal_rod_eval(rod, d->q1, NULL, d->fint1, d->S))) return st;
+    if ((st = external(d, t1, d->q1, d->v1, d->fext1))) return st;
+    /* v_f = (1-af) v1 + af v0 over the free dofs (dq is scratch until the solve), and C v_f */
+    for (int j = 0; j < n; j++) {
+        int k = rod->free_q[j];
+        d->dq[j] = (1 - af) * d->v1[k] + af * d->v[k];
+    }
+    damping_force(d, d->dq, d->Cv);
+    /* M a_m */
+    for (int j = 0; j < n; j++) {
+        int k = rod->free_q[j];
+        d->dq[j] = (1 - am) * d->a1[k] + am * d->a[k];
+    }
+    gal_rod_mass_mult(rod, d->dq, d->tmp);
+    *rn = 0;
+    for (int j = 0; j < n; j++) {
+        int k = rod->free_q[j];
+        d->r[j] = d->tmp[j] + d->Cv[j] + (1 - af) * d->fint1[k] + af * d->fint0[k] -
+                  (1 - af) * d->fext1[k] - af * d->fext0[k];
+        *rn = fmax(*rn, fabs(d->r[j]));
+    }
+    return GAL_OK;
+}
+
+/* The term of the residual that is not finite. */
+static const char *bad_term(const gal_dyn *d)
+{
+    const gal_rod *rod = d->rod;
+    for (int j = 0; j < rod->ndof; j++) {
+        int k = rod->free_q[j];
+        if (!isfinite(d->fext1[k])) return "aerodynamic load";
+        if (!isfinite(d->fint1[k])) return "elastic force";
+        if (!isfinite(d->Cv[j])) return "damping force";
+    }
+    return "inertia";
+}
+
+/* Accept the converged iterate: (q, v, a) = (q1, v1, a1), the forces of the new step kept. */
+static void accept(gal_dyn *d, double t1)
+{
+    size_t bq = (size_t)d->rod->nq * sizeof(double);
+    memcpy(d->q, d->q1, bq);
+    memcpy(d->v, d->v1, bq);
+    memcpy(d->a, d->a1, bq);
+    double *sw = d->fint0; d->fint0 = d->fint1; d->fint1 = sw;
+    sw = d->fext0; d->fext0 = d->fext1; d->fext1 = sw;
+    d->t = t1;
+}
+
+/* One step of size h from the current state; on failure the state is unchanged. */
+static int try_step(gal_dyn *d, double h)
+{
+    const gal_rod *rod = d->rod;
+    int n = rod->ndof, st;
+    double am = d->am, af = d->af, be = d->beta, ga = d->gamma;
+    double t1 = d->t + h;
+    predict(d, h);
+    double cm = (1 - am) / (be * h * h), cc = (1 - af) * ga / (be * h);
+    double tol = force_tolerance(d);
     for (int it = 0; it < d->o.max_newton; it++) {
-        /* a1, v1 from q1 */
-        for (int j = 0; j < n; j++) {
-            int k = rod->free_q[j];
-            d->a1[k] = (d->q1[k] - d->q[k] - h * d->v[k]) / (be * h * h) - (0.5 - be) / be * d->a[k];
-            d->v1[k] = d->v[k] + h * ((1 - ga) * d->a[k] + ga * d->a1[k]);
-        }
-        if ((st = gal_rod_eval(rod, d->q1, NULL, d->fint1, d->S))) return st;
-        if ((st = external(d, t1, d->q1, d->v1, d->fext1))) return st;
-        /* residual */
-        double rn = 0;
-        {
-            /* v_f = (1-af) v1 + af v0 over the free dofs (dq is scratch until the solve) */
-            for (int j = 0; j < n; j++) {
-                int k = rod->free_q[j];
-                d->dq[j] = (1 - af) * d->v1[k] + af * d->v[k];
-            }
-            /* C v_f */
-            if (d->o.rayleigh_mass != 0 || d->o.rayleigh_stiffness != 0) {
-                gal_csc_symv(d->K0, d->dq, d->Cv);
-                gal_rod_mass_mult(rod, d->dq, d->tmp);
-                for (int j = 0; j < n; j++)
-                    d->Cv[j] = d->o.rayleigh_stiffness * d->Cv[j] + d->o.rayleigh_mass * d->tmp[j];
-            } else {
-                memset(d->Cv, 0, (size_t)n * sizeof(double));
-            }
-            /* M a_m */
-            for (int j = 0; j < n; j++) {
-                int k = rod->free_q[j];
-                d->dq[j] = (1 - am) * d->a1[k] + am * d->a[k];
-            }
-            gal_rod_mass_mult(rod, d->dq, d->tmp);
-            for (int j = 0; j < n; j++) {
-                int k = rod->free_q[j];
-                d->r[j] = d->tmp[j] + d->Cv[j] + (1 - af) * d->fint1[k] + af * d->fint0[k] -
-                          (1 - af) * d->fext1[k] - af * d->fext0[k];
-                rn = fmax(rn, fabs(d->r[j]));
-            }
-        }
-        if (!isfinite(rn)) {
-            /* name the term that went wrong */
-            const char *term = "inertia";
-            for (int j = 0; j < n; j++) {
-                int k = rod->free_q[j];
-                if (!isfinite(d->fext1[k])) { term = "aerodynamic load"; break; }
-                if (!isfinite(d->fint1[k])) { term = "elastic force"; break; }
-                if (!isfinite(d->Cv[j])) { term = "damping force"; break; }
-            }
+        double rn;
+        if ((st = residual(d, h, t1, &rn))) return st;
+        if (!isfinite(rn))
             return gal_error(GAL_EFAIL, "dynamics: the residual is not finite at t = %.6g s (step %ld, "
-                             "Newton iteration %d): the %s", t1, d->steps + 1, it, term);
-        }
+                             "Newton iteration %d): the %s", t1, d->steps + 1, it, bad_term(d));
         d->newton_iterations++;
         if (rn <= tol && it > 0) {
-            /* accept */
-            memcpy(d->q, d->q1, (size_t)nq * sizeof(double));
-            memcpy(d->v, d->v1, (size_t)nq * sizeof(double));
-            memcpy(d->a, d->a1, (size_t)nq * sizeof(double));
-            double *sw = d->fint0; d->fint0 = d->fint1; d->fint1 = sw;
-            sw = d->fext0; d->fext0 = d->fext1; d->fext1 = sw;
-            d->t = t1;
+            accept(d, t1);
             return GAL_OK;
         }
         /* S = cm M + cc C + (1-af) K(q1) */
