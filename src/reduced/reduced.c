@@ -140,6 +140,7 @@ int gal_reduced_projected_force(const gal_reduced *rm, const gal_rod *rod, const
  *   [K        -MPhi] [dq  ]     [g - MPhi lam              ]
  *   [(MPhi)^T     0] [dlam] = - [Phi^T M (q - q_eq) - eta]. */
 typedef struct {
+    gal_csc *K;           /* the tangent stiffness (the stage's own values on the rod's pattern) */
     gal_chol *chol;
     double *g, *r1, *r2, *Y, *S, *x, *mdiag, *MPhi, *dq, *dl, *qt;
 } kkt_ws;
@@ -148,13 +149,14 @@ typedef struct {
 static int kkt_alloc(kkt_ws *w, const gal_rod *rod, const gal_reduced *rm)
 {
     int n = rod->ndof, nq = rod->nq, r = rm->r;
-    w->chol = gal_chol_alloc(rod->K);
+    w->K = gal_csc_clone(rod->K);
+    w->chol = w->K ? gal_chol_alloc(w->K) : NULL;
     w->g = malloc((size_t)nq * sizeof(double));
     w->r1 = malloc((size_t)n * sizeof(double)), w->x = malloc((size_t)n * sizeof(double));
     w->r2 = malloc((size_t)r * sizeof(double)), w->dl = malloc((size_t)r * sizeof(double));
     w->S = malloc((size_t)r * r * sizeof(double));
     w->Y = malloc((size_t)n * r * sizeof(double)), w->MPhi = malloc((size_t)n * r * sizeof(double));
-    if (!w->chol || !w->g || !w->r1 || !w->x || !w->r2 || !w->dl || !w->S || !w->Y || !w->MPhi) return GAL_ENOMEM;
+    if (!w->K || !w->chol || !w->g || !w->r1 || !w->x || !w->r2 || !w->dl || !w->S || !w->Y || !w->MPhi) return GAL_ENOMEM;
     for (int i = 0; i < r; i++) gal_rod_mass_mult(rod, rm->phi + (size_t)i * n, w->MPhi + (size_t)i * n);
     return GAL_OK;
 }
@@ -162,6 +164,7 @@ static int kkt_alloc(kkt_ws *w, const gal_rod *rod, const gal_reduced *rm)
 static void kkt_free(kkt_ws *w)
 {
     gal_chol_free(w->chol);
+    gal_csc_free(w->K);
     free(w->g); free(w->r1); free(w->x); free(w->r2); free(w->dl); free(w->S); free(w->Y); free(w->MPhi);
 }
 
@@ -190,12 +193,12 @@ static int solve_small(double *A, double *b, int r)
     return GAL_OK;
 }
 
-static int condense(gal_rod *rod, const double *q_eq, const gal_reduced *rm, kkt_ws *w, const double *eta,
+static int condense(const gal_rod *rod, const double *q_eq, const gal_reduced *rm, kkt_ws *w, const double *eta,
                     double *q, double *lam, double ftol, long *iters)
 {
     int n = rod->ndof, nq = rod->nq, r = rm->r, st;
     for (int it = 0; it < 60; it++) {
-        if ((st = gal_rod_eval(rod, q, NULL, w->g, rod->K))) return st;
+        if ((st = gal_rod_eval(rod, q, NULL, w->g, w->K))) return st;
         double rn1 = 0, rn2 = 0;
         for (int j = 0; j < n; j++) {
             double s = w->g[rod->free_q[j]];
@@ -212,7 +215,7 @@ static int condense(gal_rod *rod, const double *q_eq, const gal_reduced *rm, kkt
         if (!isfinite(rn1) || !isfinite(rn2)) return gal_error(GAL_EFAIL, "reduced: condensation diverged");
         if (rn1 <= ftol && rn2 <= 1e-10) return GAL_OK;
         (*iters)++;
-        if ((st = gal_chol_factor(w->chol, rod->K, 0, NULL)))
+        if ((st = gal_chol_factor(w->chol, w->K, 0, NULL)))
             return gal_error(GAL_EFAIL, "reduced: the stiffness is not positive definite at a prescribed modal "
                              "amplitude (the span buckles or goes slack there): %s", gal_error_message());
         /* Y = K^-1 M Phi, S = (M Phi)^T Y, x = K^-1 r1 */
@@ -242,7 +245,7 @@ static int condense(gal_rod *rod, const double *q_eq, const gal_reduced *rm, kkt
     return gal_error(GAL_EFAIL, "reduced: the condensation did not converge in 60 Newton iterations");
 }
 
-int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const double *q_eq, const double *eta, double *f)
+int gal_reduced_condensed_force(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, const double *eta, double *f)
 {
     int n = rod->ndof, nq = rod->nq, r = rm->r, st;
     kkt_ws w = {0};
@@ -265,7 +268,7 @@ int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const doubl
     return st;
 }
 
-gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
+gal_reduced *gal_reduced_build(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
                                int r, const gal_obs *obs_in, int nobs, const gal_reduced_opts *o_in)
 {
     double t0 = gal_wall_time();

@@ -159,7 +159,6 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
 {
     const gal_scene *sc = s->sc;
     const gal_rod *rod = s->eq.rod;
-    gal_rod *rodm = s->eq.rod;
     memset(res, 0, sizeof *res);
     res->kind = kind;
     res->nprobe = sc->simulation.nprobes;
@@ -262,7 +261,7 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
         ro.amplitude_m = sc->model.identification_amplitude > 0 ? sc->model.identification_amplitude
                                                                  : fmax(1.0, s->eq.sag);
         ro.amplitude_rad = sc->model.identification_twist;
-        gal_reduced *rm = gal_reduced_build(rodm, s->eq.q, md, sel, r, obs, no, &ro);
+        gal_reduced *rm = gal_reduced_build(rod, s->eq.q, md, sel, r, obs, no, &ro);
         if (!rm) { free(u); return gal_error(GAL_EFAIL, "simulate: reduced model: %s", gal_error_message()); }
         res->build_time_s = gal_wall_time() - tb;
         res->basis = r, res->load_cases = rm->load_cases;

@@ -40,13 +40,41 @@ double gal_rod_sag(const gal_rod *rod, const double *q)
     return 0.5 * h - z;
 }
 
+/* The Newton workspace of one solve: the stage owns its tangent and factorization (the rod's own
+ * pattern is only copied). */
 typedef struct {
-    gal_rod *rod;
+    const gal_rod *rod;   /* the rod evaluated: the working rod, or a view of it with a softer
+                           * bending stiffness while load stepping */
+    gal_csc *K;           /* the tangent stiffness (values) */
     gal_chol *chol;
     double *g, *gt, *r, *d, *qt, *mdiag;
     double ftol;
     const double *fext;   /* configuration-sized dead load, or NULL */
 } newton_ws;
+
+static void ws_free(newton_ws *w)
+{
+    gal_chol_free(w->chol);
+    gal_csc_free(w->K);
+    free(w->g); free(w->gt); free(w->qt); free(w->r); free(w->d); free(w->mdiag);
+}
+
+static int ws_alloc(newton_ws *w, const gal_rod *rod)
+{
+    int n = rod->ndof, nq = rod->nq;
+    memset(w, 0, sizeof *w);
+    w->rod = rod;
+    w->K = gal_csc_clone(rod->K);
+    w->chol = w->K ? gal_chol_alloc(w->K) : NULL;
+    w->g = malloc((size_t)nq * sizeof(double)), w->gt = malloc((size_t)nq * sizeof(double));
+    w->qt = malloc((size_t)nq * sizeof(double)), w->r = malloc((size_t)n * sizeof(double));
+    w->d = malloc((size_t)n * sizeof(double)), w->mdiag = malloc((size_t)n * sizeof(double));
+    if (!w->K || !w->chol || !w->g || !w->gt || !w->qt || !w->r || !w->d || !w->mdiag) {
+        ws_free(w);
+        return gal_error(GAL_ENOMEM, "statics: out of memory for %d elements", rod->p.elements);
+    }
+    return GAL_OK;
+}
 
 /* Total potential U(q) - fext . q and its gradient (the load is dead: it does not follow q). */
 static int eval_total(newton_ws *w, const double *q, double *U, double *g, gal_csc *K)
@@ -68,13 +96,28 @@ static double inf_norm_free(const gal_rod *rod, const double *g)
     return m;
 }
 
+/* Factor K, with a growing shift K + mu M where it is not positive definite. */
+static int factor_shifted(newton_ws *w, int it)
+{
+    const gal_rod *rod = w->rod;
+    gal_rod_mass_diag(rod, w->mdiag);
+    double kmax = 0;
+    for (int j = 0; j < rod->ndof; j++) kmax = fmax(kmax, w->K->val[w->K->diag[j]] / w->mdiag[j]);
+    double mu = 0;
+    for (int tries = 0; ; tries++) {
+        if (gal_chol_factor(w->chol, w->K, mu, w->mdiag) == GAL_OK) return GAL_OK;
+        if (tries >= 8) return gal_error(GAL_EFAIL, "statics: the tangent stiffness stays indefinite at Newton iteration %d", it);
+        mu = mu == 0 ? 1e-8 * kmax : mu * 100;
+    }
+}
+
 /* Newton with line search on the energy; q updated in place. */
 static int newton(newton_ws *w, double *q, int max_iter, int *iters, double *res)
 {
-    gal_rod *rod = w->rod;
+    const gal_rod *rod = w->rod;
     int n = rod->ndof, nq = rod->nq;
     double U;
-    int st = eval_total(w, q, &U, w->g, rod->K);
+    int st = eval_total(w, q, &U, w->g, w->K);
     if (st) return st;
     for (int it = 0; ; it++) {
         double rn = inf_norm_free(rod, w->g);
@@ -86,16 +129,7 @@ static int newton(newton_ws *w, double *q, int max_iter, int *iters, double *res
             return gal_error(GAL_EFAIL, "statics: Newton did not converge in %d iterations (residual %.3g N, tolerance %.3g N)",
                              max_iter, rn, w->ftol);
         }
-        /* factor K, with a growing shift K + mu M where it is not positive definite */
-        gal_rod_mass_diag(rod, w->mdiag);
-        double kmax = 0;
-        for (int j = 0; j < n; j++) kmax = fmax(kmax, rod->K->val[rod->K->diag[j]] / w->mdiag[j]);
-        double mu = 0;
-        for (int tries = 0; ; tries++) {
-            if (gal_chol_factor(w->chol, rod->K, mu, w->mdiag) == GAL_OK) break;
-            if (tries >= 8) return gal_error(GAL_EFAIL, "statics: the tangent stiffness stays indefinite at Newton iteration %d", it);
-            mu = mu == 0 ? 1e-8 * kmax : mu * 100;
-        }
+        if ((st = factor_shifted(w, it))) return st;
         gal_rod_gather(rod, w->g, w->r);
         if ((st = gal_chol_solve(w->chol, w->r, w->d))) return st;
         double slope = 0;
@@ -116,46 +150,34 @@ static int newton(newton_ws *w, double *q, int max_iter, int *iters, double *res
         if (!accepted)
             return gal_error(GAL_EFAIL, "statics: the line search failed at Newton iteration %d (residual %.3g N)", it, rn);
         memcpy(q, w->qt, (size_t)nq * sizeof(double));
-        if ((st = eval_total(w, q, &U, w->g, rod->K))) return st;
+        if ((st = eval_total(w, q, &U, w->g, w->K))) return st;
     }
 }
 
-int gal_statics_solve_loaded(gal_rod *rod, double *q, const double *fext, double force_tol, int max_newton,
+int gal_statics_solve_loaded(const gal_rod *rod, double *q, const double *fext, double force_tol, int max_newton,
                             int *iterations)
 {
-    int n = rod->ndof, nq = rod->nq, st;
-    newton_ws w = {0};
-    w.rod = rod, w.fext = fext, w.ftol = force_tol;
-    w.chol = gal_chol_alloc(rod->K);
-    w.g = malloc((size_t)nq * sizeof(double)), w.gt = malloc((size_t)nq * sizeof(double));
-    w.qt = malloc((size_t)nq * sizeof(double)), w.r = malloc((size_t)n * sizeof(double));
-    w.d = malloc((size_t)n * sizeof(double)), w.mdiag = malloc((size_t)n * sizeof(double));
+    newton_ws w;
+    int st = ws_alloc(&w, rod);
+    if (st) return st;
+    w.fext = fext, w.ftol = force_tol;
     double res;
     int it = 0;
-    if (!w.chol || !w.g || !w.gt || !w.qt || !w.r || !w.d || !w.mdiag) st = gal_error(GAL_ENOMEM, "statics: out of memory");
-    else st = newton(&w, q, max_newton, &it, &res);
+    st = newton(&w, q, max_newton, &it, &res);
     if (iterations) *iterations += it;
-    gal_chol_free(w.chol);
-    free(w.g); free(w.gt); free(w.qt); free(w.r); free(w.d); free(w.mdiag);
+    ws_free(&w);
     return st;
 }
 
-int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double value,
-                      const gal_statics_opts *opts_in, gal_equilibrium *eq)
+/* The elastic catenary of the specification and the working rod discretized on it (eq->rod at
+ * the catenary's unstretched length, eq->q its start configuration). */
+static int start(const gal_rod_params *p, gal_statics_spec spec, double value, gal_equilibrium *eq)
 {
-    double t0 = gal_wall_time();
-    gal_statics_opts opts;
-    if (opts_in) opts = *opts_in;
-    else gal_statics_default_opts(&opts);
-    memset(eq, 0, sizeof *eq);
-
-    /* the elastic catenary: unknowns and the start */
     gal_catenary *cat = &eq->cat;
     cat->L = p->length, cat->h = p->height_difference, cat->EA = p->EA;
     cat->w = p->mass * p->gravity;
     int st = gal_catenary_solve(cat, (int)spec, value);
     if (st) return st;
-
     gal_rod_params rp = *p;
     rp.unstretched_length = cat->L0;
     int nel = p->elements, nn = nel + 1;
@@ -171,117 +193,149 @@ int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double val
     gal_rod *rod = gal_rod_alloc(&rp, q);
     if (!rod) { free(q); return GAL_EINPUT; }
     eq->rod = rod, eq->q = q;
+    return GAL_OK;
+}
 
-    newton_ws w = {0};
-    w.rod = rod;
-    w.chol = gal_chol_alloc(rod->K);
-    int n = rod->ndof;
-    w.g = malloc((size_t)nq * sizeof(double));
-    w.gt = malloc((size_t)nq * sizeof(double));
-    w.qt = malloc((size_t)nq * sizeof(double));
-    w.r = malloc((size_t)n * sizeof(double));
-    w.d = malloc((size_t)n * sizeof(double));
-    w.mdiag = malloc((size_t)n * sizeof(double));
-    double *qsave = malloc((size_t)nq * sizeof(double));
-    if (!w.chol || !w.g || !w.gt || !w.qt || !w.r || !w.d || !w.mdiag || !qsave) {
-        st = gal_error(GAL_ENOMEM, "statics: out of memory for %d elements", nel);
-        goto done;
+/* Equilibrium at the rod's unstretched length; on failure, continuation on the bending stiffness
+ * from 0 (where the catenary start is nearly exact): the load-stepping state is a view of the
+ * working rod with a scaled EI, the rod itself is not changed. */
+static int solve_fixed_length(newton_ws *w, gal_equilibrium *eq, const gal_statics_opts *opts, double *qsave,
+                              double *res)
+{
+    const gal_rod *rod = eq->rod;
+    double *q = eq->q;
+    size_t bq = (size_t)rod->nq * sizeof(double);
+    memcpy(qsave, q, bq);
+    int st = newton(w, q, opts->max_newton, &eq->newton_iterations, res);
+    if (st == GAL_OK || !(rod->p.EI > 0)) return st;
+    memcpy(q, qsave, bq);
+    gal_rod soft = *rod;
+    w->rod = &soft;
+    double lam = 0, dl = 0.125;
+    st = GAL_OK;
+    while (lam < 1 && st == GAL_OK) {
+        double next = fmin(1.0, lam + dl);
+        soft.p.EI = next * rod->p.EI;
+        memcpy(qsave, q, bq);
+        int s2 = newton(w, q, opts->max_newton, &eq->newton_iterations, res);
+        eq->load_steps++;
+        if (s2 == GAL_OK) { lam = next; dl *= 2; }
+        else {
+            memcpy(q, qsave, bq);
+            dl *= 0.25;
+            if (dl < 1e-6) st = s2;
+        }
+        if (eq->load_steps > 200) st = gal_error(GAL_EFAIL, "statics: load stepping on the bending stiffness did not reach the full value (%.3g of it)", lam);
+    }
+    w->rod = rod;
+    return st;
+}
+
+/* The measure that a tension or sag specification fixes, minus its target. */
+static double spec_misfit(newton_ws *w, gal_statics_spec spec, double value, const double *q)
+{
+    gal_rod_eval(w->rod, q, NULL, w->g, NULL);
+    return spec == GAL_BY_TENSION ? -w->g[0] - value : gal_rod_sag(w->rod, q) - value;
+}
+
+/* The outer iteration on L0 for a given H or sag: secant on f(L0) = measure - target, started with
+ * the catenary's slope. The working rod's unstretched length is what this stage solves for. */
+static int solve_length(newton_ws *w, gal_equilibrium *eq, gal_statics_spec spec, double value,
+                        const gal_statics_opts *opts, double *res)
+{
+    gal_rod *rod = eq->rod;
+    const gal_catenary *cat = &eq->cat;
+    double L0a = rod->p.unstretched_length, fa = spec_misfit(w, spec, value, eq->q);
+    /* slope from the catenary: d(measure)/dL0 */
+    gal_catenary c2 = *cat;
+    double dL = 1e-6 * cat->L0;
+    gal_catenary_solve(&c2, GAL_BY_LENGTH, cat->L0 + dL);
+    double slope = spec == GAL_BY_TENSION ? (c2.H - cat->H) / dL : (gal_catenary_sag(&c2) - gal_catenary_sag(cat)) / dL;
+    double tol = spec == GAL_BY_TENSION ? 1e-10 * value : 1e-8 * value; /* sag: limited by the inner tolerance */
+    int st;
+    while (fabs(fa) > tol) {
+        if (eq->length_iterations++ >= opts->max_length_iter)
+            return gal_error(GAL_EFAIL, "statics: the unstretched length iteration did not converge (%s off by %.3g)",
+                             spec == GAL_BY_TENSION ? "horizontal tension" : "sag", fa);
+        double L0b = L0a - fa / slope;
+        gal_rod_set_unstretched_length(rod, L0b);
+        if ((st = newton(w, eq->q, opts->max_newton, &eq->newton_iterations, res))) return st;
+        double fb = spec_misfit(w, spec, value, eq->q);
+        if (fb != fa) slope = (fb - fa) / (L0b - L0a);
+        L0a = L0b, fa = fb;
+    }
+    return GAL_OK;
+}
+
+/* Stability: the tangent at the equilibrium must be positive definite (a free twist end leaves one
+ * neutral rotation, allowed for by a tiny shift). Leaves the forces at q in w->g. */
+static int check_stable(newton_ws *w, const double *q)
+{
+    const gal_rod *rod = w->rod;
+    gal_rod_eval(rod, q, NULL, w->g, w->K);
+    gal_rod_mass_diag(rod, w->mdiag);
+    double kmax = 0;
+    for (int j = 0; j < rod->ndof; j++) kmax = fmax(kmax, w->K->val[w->K->diag[j]] / w->mdiag[j]);
+    double shift = (rod->p.torsion && !rod->p.twist_clamped) ? 1e-12 * kmax : 0;
+    if (gal_chol_factor(w->chol, w->K, shift, w->mdiag) != GAL_OK)
+        return gal_error(GAL_EFAIL, "statics: the equilibrium found is not stable: %s", gal_error_message());
+    return GAL_OK;
+}
+
+/* The figures of the equilibrium from the support forces in w->g. */
+static void figures(const newton_ws *w, gal_equilibrium *eq)
+{
+    const gal_rod *rod = eq->rod;
+    const double *g = w->g;
+    int nel = rod->p.elements, r = 3 * nel;
+    eq->unstretched_length = rod->p.unstretched_length;
+    eq->horizontal_tension = -g[0];
+    eq->sag = gal_rod_sag(rod, eq->q);
+    eq->tension_left = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    eq->tension_right = sqrt(g[r] * g[r] + g[r + 1] * g[r + 1] + g[r + 2] * g[r + 2]);
+    double *T = malloc((size_t)nel * sizeof(double));
+    if (T) {
+        gal_rod_tensions(rod, eq->q, T);
+        for (int j = 0; j < nel; j++) eq->tension_max = fmax(eq->tension_max, T[j]);
+        free(T);
+    }
+}
+
+int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double value,
+                      const gal_statics_opts *opts_in, gal_equilibrium *eq)
+{
+    double t0 = gal_wall_time();
+    gal_statics_opts opts;
+    if (opts_in) opts = *opts_in;
+    else gal_statics_default_opts(&opts);
+    memset(eq, 0, sizeof *eq);
+    int st = start(p, spec, value, eq);
+    if (st) return st;
+    const gal_catenary *cat = &eq->cat;
+    newton_ws w;
+    double *qsave = malloc((size_t)eq->rod->nq * sizeof(double));
+    if ((st = ws_alloc(&w, eq->rod)) || !qsave) {
+        if (!st) ws_free(&w);
+        st = gal_error(GAL_ENOMEM, "statics: out of memory for %d elements", p->elements);
+        goto fail;
     }
     double Tcat = sqrt(cat->H * cat->H + cat->V0 * cat->V0);
     /* the tolerance: relative to the force scale, but not below the round-off of positions
      * (eps L) times the axial stiffness of one element (EA / l0) */
     w.ftol = fmax(opts.force_tol * fmax(fmax(Tcat, cat->w * cat->L0), 1.0),
-                  20 * DBL_EPSILON * fmax(p->length, fabs(p->height_difference)) * p->EA * nel / cat->L0);
+                  20 * DBL_EPSILON * fmax(p->length, fabs(p->height_difference)) * p->EA * p->elements / cat->L0);
     double res = 0;
-
-    /* inner solve at fixed L0; on failure, continuation on the bending stiffness from 0 (where
-     * the catenary start is nearly exact) */
-    memcpy(qsave, q, (size_t)nq * sizeof(double));
-    st = newton(&w, q, opts.max_newton, &eq->newton_iterations, &res);
-    if (st != GAL_OK && p->EI > 0) {
-        memcpy(q, qsave, (size_t)nq * sizeof(double));
-        double lam = 0, dl = 0.125;
-        st = GAL_OK;
-        while (lam < 1 && st == GAL_OK) {
-            double next = fmin(1.0, lam + dl);
-            rod->p.EI = next * p->EI;
-            memcpy(qsave, q, (size_t)nq * sizeof(double));
-            int s2 = newton(&w, q, opts.max_newton, &eq->newton_iterations, &res);
-            eq->load_steps++;
-            if (s2 == GAL_OK) { lam = next; dl *= 2; }
-            else {
-                memcpy(q, qsave, (size_t)nq * sizeof(double));
-                dl *= 0.25;
-                if (dl < 1e-6) st = s2;
-            }
-            if (eq->load_steps > 200) st = gal_error(GAL_EFAIL, "statics: load stepping on the bending stiffness did not reach the full value (%.3g of it)", lam);
-        }
-        rod->p.EI = p->EI;
+    st = solve_fixed_length(&w, eq, &opts, qsave, &res);
+    if (!st && spec != GAL_BY_LENGTH) st = solve_length(&w, eq, spec, value, &opts, &res);
+    if (!st) st = check_stable(&w, eq->q);
+    if (!st) {
+        eq->residual = res;
+        figures(&w, eq);
     }
-    if (st) goto done;
-
-    /* outer iteration on L0 for a given H or sag: secant on f(L0) = measure - target */
-    if (spec != GAL_BY_LENGTH) {
-        double L0a = rod->p.unstretched_length, fa;
-        gal_rod_eval(rod, q, NULL, w.g, NULL);
-        fa = spec == GAL_BY_TENSION ? -w.g[0] - value : gal_rod_sag(rod, q) - value;
-        /* slope from the catenary: d(measure)/dL0 */
-        gal_catenary c2 = *cat;
-        double dL = 1e-6 * cat->L0;
-        gal_catenary_solve(&c2, GAL_BY_LENGTH, cat->L0 + dL);
-        double slope = spec == GAL_BY_TENSION ? (c2.H - cat->H) / dL : (gal_catenary_sag(&c2) - gal_catenary_sag(cat)) / dL;
-        double tol = spec == GAL_BY_TENSION ? 1e-10 * value : 1e-8 * value; /* sag: limited by the inner tolerance */
-        while (fabs(fa) > tol) {
-            if (eq->length_iterations++ >= opts.max_length_iter) {
-                st = gal_error(GAL_EFAIL, "statics: the unstretched length iteration did not converge (%s off by %.3g)",
-                               spec == GAL_BY_TENSION ? "horizontal tension" : "sag", fa);
-                goto done;
-            }
-            double L0b = L0a - fa / slope;
-            gal_rod_set_unstretched_length(rod, L0b);
-            if ((st = newton(&w, q, opts.max_newton, &eq->newton_iterations, &res))) goto done;
-            gal_rod_eval(rod, q, NULL, w.g, NULL);
-            double fb = spec == GAL_BY_TENSION ? -w.g[0] - value : gal_rod_sag(rod, q) - value;
-            if (fb != fa) slope = (fb - fa) / (L0b - L0a);
-            L0a = L0b, fa = fb;
-        }
-    }
-
-    /* stability: the tangent at the equilibrium must be positive definite (a free twist end
-     * leaves one neutral rotation, allowed for by a tiny shift) */
-    gal_rod_eval(rod, q, NULL, w.g, rod->K);
-    gal_rod_mass_diag(rod, w.mdiag);
-    {
-        double kmax = 0;
-        for (int j = 0; j < n; j++) kmax = fmax(kmax, rod->K->val[rod->K->diag[j]] / w.mdiag[j]);
-        double shift = (p->torsion && !p->twist_clamped) ? 1e-12 * kmax : 0;
-        if (gal_chol_factor(w.chol, rod->K, shift, w.mdiag) != GAL_OK) {
-            st = gal_error(GAL_EFAIL, "statics: the equilibrium found is not stable: %s", gal_error_message());
-            goto done;
-        }
-    }
-
-    eq->residual = res;
-    eq->unstretched_length = rod->p.unstretched_length;
-    eq->horizontal_tension = -w.g[0];
-    eq->sag = gal_rod_sag(rod, q);
-    eq->tension_left = sqrt(w.g[0] * w.g[0] + w.g[1] * w.g[1] + w.g[2] * w.g[2]);
-    {
-        int r = 3 * nel;
-        eq->tension_right = sqrt(w.g[r] * w.g[r] + w.g[r + 1] * w.g[r + 1] + w.g[r + 2] * w.g[r + 2]);
-    }
-    {
-        double *T = malloc((size_t)nel * sizeof(double));
-        if (T) {
-            gal_rod_tensions(rod, q, T);
-            for (int j = 0; j < nel; j++) eq->tension_max = fmax(eq->tension_max, T[j]);
-            free(T);
-        }
-    }
-done:
-    eq->factorizations = w.chol ? w.chol->factorizations : 0;
-    gal_chol_free(w.chol);
-    free(w.g); free(w.gt); free(w.qt); free(w.r); free(w.d); free(w.mdiag); free(qsave);
+    eq->factorizations = w.chol->factorizations;
+    ws_free(&w);
+fail:
+    free(qsave);
     eq->wall_time_s = gal_wall_time() - t0;
     if (st != GAL_OK) {
         gal_rod_free(eq->rod);

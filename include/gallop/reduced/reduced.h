@@ -63,7 +63,7 @@ void gal_reduced_default_opts(gal_reduced_opts *o);
 
 /* Identify the model about the equilibrium q_eq on the modes of `md` with indices sel[0..r-1].
  * obs (nobs) are the quantities to be recovered by expansion. */
-gal_reduced *gal_reduced_build(gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
+gal_reduced *gal_reduced_build(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
                                int r, const gal_obs *obs, int nobs, const gal_reduced_opts *o);
 gal_reduced *gal_reduced_free(gal_reduced *rm);
 
@@ -75,7 +75,7 @@ void gal_reduced_observe_rate(const gal_reduced *rm, const double *eta, const do
                               double *rate);
 /* The exact condensed restoring force at eta: the constraint forces of the full rod held at
  * Phi^T M u = eta with every other dof relaxed (what the polynomial f fits; costs a Newton solve). */
-int gal_reduced_condensed_force(const gal_reduced *rm, gal_rod *rod, const double *q_eq, const double *eta,
+int gal_reduced_condensed_force(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, const double *eta,
                                 double *f);
 /* The Galerkin projection on the same linear modes, Phi^T grad U(q_eq + Phi eta) (cost grows with
  * the elements; what the condensation corrects; for comparison). */

@@ -48,7 +48,7 @@ void gal_equilibrium_clear(gal_equilibrium *eq);
 /* Equilibrium of the rod under gravity and a dead load fext (configuration-sized, generalized
  * forces on the free dofs), by Newton from q (updated in place): grad U(q) = fext to within
  * force_tol (N). Iterations are added to *iterations. */
-int gal_statics_solve_loaded(gal_rod *rod, double *q, const double *fext, double force_tol, int max_newton,
+int gal_statics_solve_loaded(const gal_rod *rod, double *q, const double *fext, double force_tol, int max_newton,
                             int *iterations);
 
 /* Mid-span sag below the chord of a configuration (quadratic interpolation at x = L/2), m. */
