@@ -120,73 +120,92 @@ static void split_clusters(const gal_rod *rod, gal_modes *out, const double *mdi
     }
 }
 
+/* The workspace of one ARPACK run: the stage's own K - sigma M and its factorization. */
 typedef struct {
-    const gal_csc *K;
-    const double *mdiag;
+    int n, nev, ncv, lworkl;
+    double *mdiag, *tmp, *resid, *v, *workd, *workl, *d, *z, *full;
+    int *select;
+    gal_csc *K;
     gal_chol *chol;
-    double *tmp;
-    int n;
-} opdata;
+} modes_ws;
 
-int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out)
+static void ws_free(modes_ws *w)
 {
-    double t0 = gal_wall_time();
-    memset(out, 0, sizeof *out);
-    int n = rod->ndof;
-    if (nev < 1 || nev > n - 1)
-        return gal_error(GAL_EINPUT, "modes: %d modes asked of a system with %d degrees of freedom "
-                         "(allowed: 1 to %d)", nev, n, n - 1);
-    int st = GAL_OK;
-    int ncv = 2 * nev + 1 > nev + 20 ? 2 * nev + 1 : nev + 20;
-    if (ncv > n) ncv = n;
-    int lworkl = ncv * (ncv + 8);
-    double *mdiag = malloc((size_t)n * sizeof(double)), *tmp = malloc((size_t)n * sizeof(double));
-    double *resid = malloc((size_t)n * sizeof(double)), *v = malloc((size_t)n * ncv * sizeof(double));
-    double *workd = malloc((size_t)3 * n * sizeof(double)), *workl = malloc((size_t)lworkl * sizeof(double));
-    double *d = malloc((size_t)nev * sizeof(double)), *z = malloc((size_t)n * nev * sizeof(double));
-    double *full = malloc((size_t)rod->nq * sizeof(double));
-    int *select = calloc((size_t)ncv, sizeof(int));
-    gal_csc *K = gal_csc_clone(rod->K);
-    gal_chol *chol = K ? gal_chol_alloc(K) : NULL;
-    if (!mdiag || !tmp || !resid || !v || !workd || !workl || !d || !z || !full || !select || !K || !chol) {
-        st = gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
-        goto done;
-    }
-    if ((st = gal_rod_eval(rod, q, NULL, NULL, K))) goto done;
-    gal_rod_mass_diag(rod, mdiag);
+    gal_chol_free(w->chol);
+    gal_csc_free(w->K);
+    free(w->mdiag); free(w->tmp); free(w->resid); free(w->v); free(w->workd); free(w->workl); free(w->d);
+    free(w->z); free(w->full); free(w->select);
+}
 
+static int ws_alloc(modes_ws *w, const gal_rod *rod, int nev)
+{
+    int n = rod->ndof;
+    memset(w, 0, sizeof *w);
+    w->n = n, w->nev = nev;
+    w->ncv = 2 * nev + 1 > nev + 20 ? 2 * nev + 1 : nev + 20;
+    if (w->ncv > n) w->ncv = n;
+    int ncv = w->ncv;
+    w->lworkl = ncv * (ncv + 8);
+    w->mdiag = malloc((size_t)n * sizeof(double)), w->tmp = malloc((size_t)n * sizeof(double));
+    w->resid = malloc((size_t)n * sizeof(double)), w->v = malloc((size_t)n * ncv * sizeof(double));
+    w->workd = malloc((size_t)3 * n * sizeof(double)), w->workl = malloc((size_t)w->lworkl * sizeof(double));
+    w->d = malloc((size_t)nev * sizeof(double)), w->z = malloc((size_t)n * nev * sizeof(double));
+    w->full = malloc((size_t)rod->nq * sizeof(double));
+    w->select = calloc((size_t)ncv, sizeof(int));
+    w->K = gal_csc_clone(rod->K);
+    w->chol = w->K ? gal_chol_alloc(w->K) : NULL;
+    if (!w->mdiag || !w->tmp || !w->resid || !w->v || !w->workd || !w->workl || !w->d || !w->z || !w->full ||
+        !w->select || !w->K || !w->chol) {
+        ws_free(w);
+        return gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
+    }
+    return GAL_OK;
+}
+
+/* The tangent at q, the shift sigma below the lowest frequency, and the factorization of
+ * K - sigma M. */
+static int shift_factor(const gal_rod *rod, const double *q, modes_ws *w, gal_modes *out)
+{
+    gal_csc *K = w->K;
+    int n = w->n, st;
+    if ((st = gal_rod_eval(rod, q, NULL, NULL, K))) return st;
+    gal_rod_mass_diag(rod, w->mdiag);
     /* shift below the lowest frequency: a fraction of the lowest string frequency
      * (pi/L)^2 T/m, from the smallest ratio of stiffness to mass on the diagonal scaled */
     double kmin = INFINITY;
-    for (int j = 0; j < n; j++) kmin = fmin(kmin, K->val[K->diag[j]] / mdiag[j]);
+    for (int j = 0; j < n; j++) kmin = fmin(kmin, K->val[K->diag[j]] / w->mdiag[j]);
     double sigma = -0.1 * kmin * pow(GAL_PI / rod->p.elements, 2);
     if (!(sigma < 0)) sigma = -1e-3;
     out->sigma = sigma;
     /* K - sigma M on the common pattern (M is not diagonal with eccentric ice) */
     for (int k = 0; k < K->nnz; k++) K->val[k] -= sigma * rod->M->val[k];
-    if (gal_chol_factor(chol, K, 0, NULL) != GAL_OK) {
-        st = gal_error(GAL_EFAIL, "modes: K - sigma M is not positive definite at sigma = %g: the "
-                       "equilibrium has lost stability (%s)", sigma, gal_error_message());
-        goto done;
-    }
+    if (gal_chol_factor(w->chol, K, 0, NULL) != GAL_OK)
+        return gal_error(GAL_EFAIL, "modes: K - sigma M is not positive definite at sigma = %g: the "
+                         "equilibrium has lost stability (%s)", sigma, gal_error_message());
+    return GAL_OK;
+}
 
-    /* ARPACK reverse communication: OP = (K - sigma M)^-1 M, B = M */
+/* ARPACK reverse communication, OP = (K - sigma M)^-1 M, B = M, then the eigenpairs (w->d, w->z). */
+static int arpack(const gal_rod *rod, modes_ws *w, gal_modes *out)
+{
+    int n = w->n, nev = w->nev, ncv = w->ncv, st;
     int ido = 0, info = 0, iparam[11] = {0}, ipntr[14] = {0};
     iparam[0] = 1;     /* exact shifts */
     iparam[2] = 1000;  /* maximum restarts */
     iparam[6] = 3;     /* shift-invert mode */
-    double tol = 1e-12;
-    for (int k = 0; k < n; k++) resid[k] = 1.0 + 0.37 * sin(1.3 * k); /* deterministic start */
+    double tol = 1e-12, sigma = out->sigma;
+    for (int k = 0; k < n; k++) w->resid[k] = 1.0 + 0.37 * sin(1.3 * k); /* deterministic start */
     info = 1;
     for (;;) {
-        dsaupd_c(&ido, "G", n, "LM", nev, tol, resid, ncv, v, n, iparam, ipntr, workd, workl, lworkl, &info);
-        double *x = workd + ipntr[0] - 1, *y = workd + ipntr[1] - 1;
+        dsaupd_c(&ido, "G", n, "LM", nev, tol, w->resid, ncv, w->v, n, iparam, ipntr, w->workd, w->workl,
+                 w->lworkl, &info);
+        double *x = w->workd + ipntr[0] - 1, *y = w->workd + ipntr[1] - 1;
         if (ido == -1) {
-            gal_rod_mass_mult(rod, x, tmp);
-            if ((st = gal_chol_solve(chol, tmp, y))) goto done;
+            gal_rod_mass_mult(rod, x, w->tmp);
+            if ((st = gal_chol_solve(w->chol, w->tmp, y))) return st;
             out->op_applications++;
         } else if (ido == 1) {
-            if ((st = gal_chol_solve(chol, workd + ipntr[2] - 1, y))) goto done;
+            if ((st = gal_chol_solve(w->chol, w->workd + ipntr[2] - 1, y))) return st;
             out->op_applications++;
         } else if (ido == 2) {
             gal_rod_mass_mult(rod, x, y);
@@ -194,45 +213,46 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
             break;
         }
     }
-    if (info < 0 || info == 1) {
-        st = gal_error(GAL_EFAIL, "modes: ARPACK dsaupd failed (info %d%s)", info,
-                       info == 1 ? ": maximum number of restarts reached" : "");
-        goto done;
-    }
+    if (info < 0 || info == 1)
+        return gal_error(GAL_EFAIL, "modes: ARPACK dsaupd failed (info %d%s)", info,
+                         info == 1 ? ": maximum number of restarts reached" : "");
     out->arpack_restarts = iparam[2];
-    dseupd_c(1, "A", select, d, z, n, sigma, "G", n, "LM", nev, tol, resid, ncv, v, n, iparam, ipntr,
-             workd, workl, lworkl, &info);
-    if (info != 0) {
-        st = gal_error(GAL_EFAIL, "modes: ARPACK dseupd failed (info %d)", info);
-        goto done;
-    }
+    dseupd_c(1, "A", w->select, w->d, w->z, n, sigma, "G", n, "LM", nev, tol, w->resid, ncv, w->v, n, iparam,
+             ipntr, w->workd, w->workl, w->lworkl, &info);
+    if (info != 0) return gal_error(GAL_EFAIL, "modes: ARPACK dseupd failed (info %d)", info);
     int nconv = iparam[4];
-    if (nconv < nev) {
-        st = gal_error(GAL_EFAIL, "modes: ARPACK converged %d of %d modes", nconv, nev);
-        goto done;
-    }
+    if (nconv < nev) return gal_error(GAL_EFAIL, "modes: ARPACK converged %d of %d modes", nconv, nev);
+    return GAL_OK;
+}
+
+/* The modes by increasing frequency, mass-normalized, coincident pairs split, signs fixed,
+ * classified. */
+static int extract(const gal_rod *rod, const double *q, modes_ws *w, gal_modes *out)
+{
+    int n = w->n, nev = w->nev;
     out->n = nev;
     out->ndof = n;
     out->mode = calloc((size_t)nev, sizeof(gal_mode));
     out->shape = malloc((size_t)n * nev * sizeof(double));
-    if (!out->mode || !out->shape) {
-        st = gal_error(GAL_ENOMEM, "modes: out of memory");
-        goto done;
+    int *ord = malloc((size_t)nev * sizeof(int));
+    if (!out->mode || !out->shape || !ord) {
+        free(ord);
+        return gal_error(GAL_ENOMEM, "modes: out of memory");
     }
     /* sort by eigenvalue (dseupd returns them ascending, but do not rely on it) */
-    int *ord = malloc((size_t)nev * sizeof(int));
+    const double *d = w->d;
     for (int k = 0; k < nev; k++) ord[k] = k;
     for (int a = 1; a < nev; a++)
         for (int b = a; b > 0 && d[ord[b]] < d[ord[b - 1]]; b--) { int t = ord[b]; ord[b] = ord[b - 1]; ord[b - 1] = t; }
     for (int k = 0; k < nev; k++) {
-        const double *phi = z + (size_t)ord[k] * n;
+        const double *phi = w->z + (size_t)ord[k] * n;
         double *dst = out->shape + (size_t)k * n;
         /* mass-normalize (ARPACK's are M-orthonormal already; renormalize against round-off) and
          * fix the sign: largest entry positive */
         double mm = 0, big = 0;
-        gal_rod_mass_mult(rod, phi, tmp);
+        gal_rod_mass_mult(rod, phi, w->tmp);
         for (int j = 0; j < n; j++) {
-            mm += tmp[j] * phi[j];
+            mm += w->tmp[j] * phi[j];
             if (fabs(phi[j]) > fabs(big)) big = phi[j];
         }
         double s = (big < 0 ? -1.0 : 1.0) / sqrt(mm);
@@ -242,13 +262,12 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
         md->omega = lam > 0 ? sqrt(lam) : 0;
         md->frequency_hz = md->omega / (2 * GAL_PI);
     }
-    {
-        double *lam = malloc((size_t)nev * sizeof(double));
-        if (lam) {
-            for (int k = 0; k < nev; k++) lam[k] = out->mode[k].omega * out->mode[k].omega;
-            split_clusters(rod, out, mdiag, lam);
-            free(lam);
-        }
+    free(ord);
+    double *lam = malloc((size_t)nev * sizeof(double));
+    if (lam) {
+        for (int k = 0; k < nev; k++) lam[k] = out->mode[k].omega * out->mode[k].omega;
+        split_clusters(rod, out, w->mdiag, lam);
+        free(lam);
     }
     for (int k = 0; k < nev; k++) {
         gal_mode *md = out->mode + k;
@@ -256,17 +275,29 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
         double *dst = out->shape + (size_t)k * n, big = 0;
         for (int j = 0; j < n; j++) if (fabs(dst[j]) > fabs(big)) big = dst[j];
         if (big < 0) for (int j = 0; j < n; j++) dst[j] = -dst[j];
-        classify(rod, q, dst, full, md);
+        classify(rod, q, dst, w->full, md);
         out->found[md->family]++;
     }
-    free(ord);
-done:
-    out->factorizations = chol ? chol->factorizations : 0;
-    out->solves = chol ? chol->solves : 0;
-    gal_chol_free(chol);
-    gal_csc_free(K);
-    free(mdiag); free(tmp); free(resid); free(v); free(workd); free(workl); free(d); free(z);
-    free(full); free(select);
+    return GAL_OK;
+}
+
+int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out)
+{
+    double t0 = gal_wall_time();
+    memset(out, 0, sizeof *out);
+    int n = rod->ndof;
+    if (nev < 1 || nev > n - 1)
+        return gal_error(GAL_EINPUT, "modes: %d modes asked of a system with %d degrees of freedom "
+                         "(allowed: 1 to %d)", nev, n, n - 1);
+    modes_ws w;
+    int st = ws_alloc(&w, rod, nev);
+    if (st) return st;
+    st = shift_factor(rod, q, &w, out);
+    if (!st) st = arpack(rod, &w, out);
+    if (!st) st = extract(rod, q, &w, out);
+    out->factorizations = w.chol->factorizations;
+    out->solves = w.chol->solves;
+    ws_free(&w);
     out->rounds = 1;
     out->wall_time_s = gal_wall_time() - t0;
     if (st) {
