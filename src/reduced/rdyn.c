@@ -102,14 +102,9 @@ static void quad_point(const gal_rod *rod, int nqp, int q, int *e, double *xi, d
     *e1 = *e0 + 1 < nel ? *e0 + 1 : *e0;
 }
 
-gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, double ra,
-                         double rb, const gal_pointload *load, int nqp, double tol, double h0, int obs_offset)
+static int alloc_arrays(gal_rdyn *d, const gal_reduced *rm, int nqp, int obs_offset)
 {
-    gal_rdyn *d = calloc(1, sizeof *d);
-    if (!d) return NULL;
-    int r = rm->r, nn = rod->nn, nel = rod->p.elements, n = rm->ndof;
-    d->rm = rm, d->r = r, d->nqp = nqp, d->tol = tol;
-    if (load) d->load = *load;
+    int r = rm->r;
     d->wq = malloc((size_t)nqp * sizeof(double));
     d->req = malloc((size_t)3 * nqp * sizeof(double));
     d->teq = malloc((size_t)3 * nqp * sizeof(double));
@@ -125,18 +120,87 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
     d->nt = malloc((size_t)nqp * sizeof(double));
     d->obs_offset = obs_offset;
     if (obs_offset >= 0) {
-        if (obs_offset + 7 * nqp > rm->nobs) {
-            gal_error(GAL_EINPUT, "reduced model: %d observations, the quadrature needs %d from %d", rm->nobs, 7 * nqp, obs_offset);
-            return gal_rdyn_free(d);
-        }
+        if (obs_offset + 7 * nqp > rm->nobs)
+            return gal_error(GAL_EINPUT, "reduced model: %d observations, the quadrature needs %d from %d", rm->nobs, 7 * nqp, obs_offset);
         d->ob = malloc((size_t)rm->nobs * sizeof(double));
         d->obr = malloc((size_t)rm->nobs * sizeof(double));
-        if (!d->ob || !d->obr) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return gal_rdyn_free(d); }
+        if (!d->ob || !d->obr) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
     }
-    double *full = calloc((size_t)rod->nq * r, sizeof(double));
     if (!d->wq || !d->req || !d->teq || !d->aeq || !d->phr || !d->phs || !d->pht || !d->damp || !d->y || !d->y_prev ||
-        !d->fr || !d->fl || !full) {
-        free(full);
+        !d->fr || !d->fl || !d->nt)
+        return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    return GAL_OK;
+}
+
+/* The quadrature tables: at each point its weight, equilibrium position, unit tangent, reference
+ * director and |dr/ds|, and the mode shapes there (translation, its derivative along s, twist);
+ * `full` holds the modes over the whole configuration (r x nq). */
+static void quadrature_tables(gal_rdyn *d, const gal_rod *rod, const double *q_eq, const double *full)
+{
+    int r = d->r, nn = rod->nn, nel = rod->p.elements;
+    double l0 = rod->p.unstretched_length / nel;
+    for (int q = 0; q < d->nqp; q++) {
+        int e, e0, e1;
+        double xi, w1;
+        quad_point(rod, d->nqp, q, &e, &xi, &d->wq[q], &e0, &e1, &w1);
+        for (int k = 0; k < 3; k++) {
+            d->req[3 * q + k] = (1 - xi) * q_eq[3 * e + k] + xi * q_eq[3 * (e + 1) + k];
+            d->teq[3 * q + k] = (q_eq[3 * (e + 1) + k] - q_eq[3 * e + k]) / l0; /* dr/ds */
+        }
+        double tt[3], a[3];
+        gal_rod_material_frame(rod, q_eq, e, tt, a);
+        /* reference director normal to the tangent at equilibrium; twist is added by pht */
+        for (int k = 0; k < 3; k++) d->aeq[3 * q + k] = a[k];
+        /* keep teq as the unit tangent for the frame transport and rs as dr/ds: since
+         * |dr/ds| differs from 1 only by the strain, normalize */
+        double nt = sqrt(gal_dot3(d->teq + 3 * q, d->teq + 3 * q));
+        d->nt[q] = nt;
+        for (int k = 0; k < 3; k++) d->teq[3 * q + k] /= nt;
+        /* twist at s: piecewise linear between edge centres (e0, e1, w1) */
+        for (int i = 0; i < r; i++) {
+            const double *F = full + (size_t)i * rod->nq;
+            for (int k = 0; k < 3; k++) {
+                d->phr[((size_t)q * r + i) * 3 + k] = (1 - xi) * F[3 * e + k] + xi * F[3 * (e + 1) + k];
+                d->phs[((size_t)q * r + i) * 3 + k] = (F[3 * (e + 1) + k] - F[3 * e + k]) / l0 / nt;
+            }
+            if (rod->p.torsion)
+                d->pht[(size_t)q * r + i] = (1 - w1) * F[3 * nn + e0] + w1 * F[3 * nn + e1];
+        }
+    }
+}
+
+/* GSL's rk8pd driver. The error per step: tol relative to the state, and tol times the
+ * identification amplitude (and that amplitude times the frequency for the velocities) in absolute
+ * terms, so that a state at rest is not held to a zero error. */
+static int driver(gal_rdyn *d, double h0)
+{
+    const gal_reduced *rm = d->rm;
+    int r = d->r;
+    d->sys.function = rhs;
+    d->sys.jacobian = NULL;
+    d->sys.dimension = (size_t)2 * r;
+    d->sys.params = d;
+    double *sc = malloc((size_t)2 * r * sizeof(double));
+    if (!sc) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    for (int i = 0; i < r; i++) sc[i] = rm->eta_ref[i], sc[r + i] = rm->eta_ref[i] * sqrt(rm->omega2[i]);
+    d->drv = gsl_odeiv2_driver_alloc_scaled_new(&d->sys, gsl_odeiv2_step_rk8pd, h0, d->tol, d->tol, 1.0, 0.0, sc);
+    free(sc);
+    if (!d->drv) return gal_error(GAL_ENOMEM, "reduced model: cannot allocate the ODE driver");
+    gsl_odeiv2_driver_set_hmin(d->drv, 1e-10);
+    return GAL_OK;
+}
+
+gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, double ra,
+                         double rb, const gal_pointload *load, int nqp, double tol, double h0, int obs_offset)
+{
+    gal_rdyn *d = calloc(1, sizeof *d);
+    if (!d) return NULL;
+    int r = rm->r, n = rm->ndof;
+    d->rm = rm, d->r = r, d->nqp = nqp, d->tol = tol;
+    if (load) d->load = *load;
+    if (alloc_arrays(d, rm, nqp, obs_offset)) return gal_rdyn_free(d);
+    double *full = calloc((size_t)rod->nq * r, sizeof(double));
+    if (!full) {
         gal_error(GAL_ENOMEM, "reduced model: out of memory");
         return gal_rdyn_free(d);
     }
@@ -144,55 +208,9 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
         d->damp[i] = ra + rb * rm->omega2[i];
         for (int j = 0; j < n; j++) full[(size_t)i * rod->nq + rod->free_q[j]] = rm->phi[(size_t)i * n + j];
     }
-    double l0 = rod->p.unstretched_length / nel;
-    for (int q = 0; q < nqp; q++) {
-        {
-            int e, e0, e1;
-            double xi, w1;
-            quad_point(rod, nqp, q, &e, &xi, &d->wq[q], &e0, &e1, &w1);
-            for (int k = 0; k < 3; k++) {
-                d->req[3 * q + k] = (1 - xi) * q_eq[3 * e + k] + xi * q_eq[3 * (e + 1) + k];
-                d->teq[3 * q + k] = (q_eq[3 * (e + 1) + k] - q_eq[3 * e + k]) / l0; /* dr/ds */
-            }
-            double tt[3], a[3];
-            gal_rod_material_frame(rod, q_eq, e, tt, a);
-            /* reference director normal to the tangent at equilibrium; twist is added by pht */
-            for (int k = 0; k < 3; k++) d->aeq[3 * q + k] = a[k];
-            /* keep teq as the unit tangent for the frame transport and rs as dr/ds: since
-             * |dr/ds| differs from 1 only by the strain, normalize */
-            double nt = sqrt(gal_dot3(d->teq + 3 * q, d->teq + 3 * q));
-            d->nt[q] = nt;
-            for (int k = 0; k < 3; k++) d->teq[3 * q + k] /= nt;
-            /* twist at s: piecewise linear between edge centres (e0, e1, w1) */
-            for (int i = 0; i < r; i++) {
-                const double *F = full + (size_t)i * rod->nq;
-                for (int k = 0; k < 3; k++) {
-                    d->phr[((size_t)q * r + i) * 3 + k] = (1 - xi) * F[3 * e + k] + xi * F[3 * (e + 1) + k];
-                    d->phs[((size_t)q * r + i) * 3 + k] = (F[3 * (e + 1) + k] - F[3 * e + k]) / l0 / nt;
-                }
-                if (rod->p.torsion)
-                    d->pht[(size_t)q * r + i] = (1 - w1) * F[3 * nn + e0] + w1 * F[3 * nn + e1];
-            }
-        }
-    }
+    quadrature_tables(d, rod, q_eq, full);
     free(full);
-    d->sys.function = rhs;
-    d->sys.jacobian = NULL;
-    d->sys.dimension = (size_t)2 * r;
-    d->sys.params = d;
-    /* error per step: tol relative to the state, and tol times the identification amplitude (and
-     * that amplitude times the frequency for the velocities) in absolute terms, so that a state at
-     * rest is not held to a zero error */
-    double *sc = malloc((size_t)2 * r * sizeof(double));
-    if (!sc) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return gal_rdyn_free(d); }
-    for (int i = 0; i < r; i++) sc[i] = rm->eta_ref[i], sc[r + i] = rm->eta_ref[i] * sqrt(rm->omega2[i]);
-    d->drv = gsl_odeiv2_driver_alloc_scaled_new(&d->sys, gsl_odeiv2_step_rk8pd, h0, tol, tol, 1.0, 0.0, sc);
-    free(sc);
-    if (!d->drv) {
-        gal_error(GAL_ENOMEM, "reduced model: cannot allocate the ODE driver");
-        return gal_rdyn_free(d);
-    }
-    gsl_odeiv2_driver_set_hmin(d->drv, 1e-10);
+    if (driver(d, h0)) return gal_rdyn_free(d);
     return d;
 }
 
