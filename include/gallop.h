@@ -36,6 +36,8 @@
 #include "gallop/reduced/rom.h"
 #include "gallop/reduced/rom_sim.h"
 /* run: galloping runs */
+#include "gallop/run/forward.h"
+#include "gallop/run/integrator.h"
 #include "gallop/run/sim.h"
 /* analysis: spectra, stability, galloping onset, accuracy */
 #include "gallop/analysis/spectrum.h"

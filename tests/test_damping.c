@@ -15,12 +15,10 @@ static int equilibrium(const char *const *ov, int n, gal_equilibrium *eq)
     int st = gal_scene_load(&sc, "data/scenes/iced_gallop.ini", ov, n, NULL);
     CHECK(st == GAL_OK, "%s", gal_error_message());
     if (st) return st;
-    gal_rod_params p;
-    gal_statics_spec spec;
-    double value;
-    st = gal_model_rod_params(&sc, &p, &spec, &value);
-    if (!st) st = gal_statics_solve(&p, spec, value, NULL, eq);
+    gal_model *m = gal_model_alloc(&sc, &st);
+    if (m) st = gal_statics_solve(&m->rod[0].p, m->rod[0].spec, m->rod[0].spec_value, NULL, eq);
     CHECK(st == GAL_OK, "%s", gal_error_message());
+    gal_model_free(m);
     return st;
 }
 

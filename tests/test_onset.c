@@ -26,14 +26,14 @@ static int fixture_init(fixture *f, const char *const *ov, int n, int rayleigh)
     if (!st) st = gal_sim_setup_init(&f->s, &f->sc, 1);
     CHECK(st == GAL_OK, "%s", gal_error_message());
     if (st) return st;
-    const gal_modes *md = &f->s.md;
+    const gal_modes *md = &f->s.data->md;
     double wmin = INFINITY, wmax = 0, zeta = f->sc.conductor.damping_ratio, a, b;
     for (int k = 0; k < md->n; k++)
         if (md->mode[k].selected) wmin = fmin(wmin, md->mode[k].omega), wmax = fmax(wmax, md->mode[k].omega);
     if (rayleigh) {
         gal_damping_rayleigh_fit(zeta, wmin, wmax, &a, &b);
-        f->C = gal_damping_rayleigh_alloc(f->s.eq.rod, f->s.eq.q, a, b);
-    } else f->C = gal_damping_modal_alloc(f->s.eq.rod, f->s.eq.q, zeta, 0);
+        f->C = gal_damping_rayleigh_alloc(f->s.data->eq.rod, f->s.data->eq.q, a, b);
+    } else f->C = gal_damping_modal_alloc(f->s.data->eq.rod, f->s.data->eq.q, zeta, 0);
     CHECK(f->C != NULL, "%s", gal_error_message());
     f->mass = f->sc.conductor.mass_per_length + f->sc.ice.mass_per_length;
     return f->C ? GAL_OK : GAL_EFAIL;
@@ -47,7 +47,7 @@ static void fixture_clear(fixture *f)
 
 static int analyse(fixture *f, gal_onset_opts *o, gal_onset *r)
 {
-    int st = gal_onset_analyse(f->s.eq.rod, f->s.eq.q, &f->s.loads, f->C, f->mass, o, r);
+    int st = gal_onset_analyse(f->s.data->eq.rod, f->s.data->eq.q, &f->s.data->loads, f->C, f->mass, o, r);
     CHECK(st == GAL_OK, "%s", gal_error_message());
     return st;
 }
@@ -66,9 +66,9 @@ static void test_den_hartog_one_vertical_mode(void)
     gal_onset r;
     if (!analyse(&f, &o, &r)) {
         double w = 0;
-        for (int k = 0; k < f.s.md.n && w == 0; k++)
-            if (f.s.md.mode[k].family == GAL_FAMILY_VERTICAL) w = f.s.md.mode[k].omega;
-        const gal_loads *L = &f.s.loads;
+        for (int k = 0; k < f.s.data->md.n && w == 0; k++)
+            if (f.s.data->md.mode[k].family == GAL_FAMILY_VERTICAL) w = f.s.data->md.mode[k].omega;
+        const gal_loads *L = &f.s.data->loads;
         double uc = gal_stability_onset(L->table, L->attack_angle, f.mass, 0.003, w, L->rho, L->diam);
         printf("    (onset %.5g m/s, Den Hartog %.5g m/s, mode %.4f Hz)\n", r.onset_speed, uc, r.onset_frequency_hz);
         CHECK_REL(r.onset_speed, uc, 5e-3);
@@ -114,13 +114,13 @@ static void test_aero_matrices(void)
     fixture f;
     const char *ov[] = {"model.elements=30", "wind.speed=12"};
     if (fixture_init(&f, ov, 2, 0)) return;
-    gal_rod *rod = f.s.eq.rod;
+    gal_rod *rod = f.s.data->eq.rod;
     int nq = rod->nq, n = rod->ndof, nb = 8, it = 0;
     double *q = malloc(6 * (size_t)nq * sizeof(double)), *v = q + nq, *qp = v + nq, *fp = qp + nq, *fm = fp + nq;
     double *dv = fm + nq, Ka[64], Ca[64];
-    gal_loads L = f.s.loads;
+    gal_loads L = f.s.data->loads;
     L.ramp_time = 0; /* the mean wind at full speed */
-    memcpy(q, f.s.eq.q, nq * sizeof(double));
+    memcpy(q, f.s.data->eq.q, nq * sizeof(double));
     CHECK(gal_loads_static(rod, q, &L, 1e-4, 200, &it) == GAL_OK, "%s", gal_error_message());
     gal_modes md;
     CHECK(gal_modes_solve(rod, q, nb, &md) == GAL_OK, "%s", gal_error_message());

@@ -29,12 +29,12 @@ static void test_dynamic_blowout_matches_statics(void)
     gal_sim_result r;
     CHECK(gal_sim_run(&s, GAL_MODEL_FULL, &r) == GAL_OK, "%s", gal_error_message());
     /* static solution under the same mean drag */
-    int nq = s.eq.rod->nq, it = 0;
+    int nq = s.data->eq.rod->nq, it = 0;
     double *q = malloc(nq * sizeof(double));
-    memcpy(q, s.eq.q, nq * sizeof(double));
-    CHECK(gal_loads_static(s.eq.rod, q, &s.loads, 1e-6, 50, &it) == GAL_OK, "%s", gal_error_message());
-    int mid = s.eq.rod->nn / 2, k = gal_sim_mid_probe(&r);
-    double ys = q[3 * mid + 1] - s.eq.q[3 * mid + 1], zs = q[3 * mid + 2] - s.eq.q[3 * mid + 2];
+    memcpy(q, s.data->eq.q, nq * sizeof(double));
+    CHECK(gal_loads_static(s.data->eq.rod, q, &s.data->loads, 1e-6, 50, &it) == GAL_OK, "%s", gal_error_message());
+    int mid = s.data->eq.rod->nn / 2, k = gal_sim_mid_probe(&r);
+    double ys = q[3 * mid + 1] - s.data->eq.q[3 * mid + 1], zs = q[3 * mid + 2] - s.data->eq.q[3 * mid + 2];
     const double *last = r.trace + (size_t)(r.nsamples - 1) * 4 * r.nprobe + 4 * k;
     printf("    (mid-span blow-out: dynamic %.5f m across, %.5f m up; static %.5f, %.5f)\n", last[0], last[1], ys, zs);
     CHECK_REL(last[0], ys, 1e-2);

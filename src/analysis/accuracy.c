@@ -7,6 +7,7 @@
 #include "gallop/base/core.h"
 #include "gallop/model/model.h"
 #include "gallop/modes/modes.h"
+#include "gallop/run/forward.h"
 #include "gallop/statics/statics.h"
 
 #include <math.h>
@@ -97,37 +98,33 @@ static double median(double *v, int n)
  * elements: statics + modes, the figures of a mesh */
 
 typedef struct {
-    gal_equilibrium eq;
-    gal_modes md;
-    int have_eq, have_md;
+    gal_model *model;
+    gal_data *data;            /* the pipeline to the modes */
+    const gal_equilibrium *eq; /* its equilibrium and modes */
+    const gal_modes *md;
     double t_statics, t_total; /* s */
 } mesh_run;
 
 static void mesh_clear(mesh_run *m)
 {
-    if (m->have_md) gal_modes_clear(&m->md);
-    if (m->have_eq) gal_equilibrium_clear(&m->eq);
-    m->have_eq = m->have_md = 0;
+    gal_data_free(m->data);
+    gal_model_free(m->model);
+    memset(m, 0, sizeof *m);
 }
 
 static int mesh_solve(const gal_scene *sc, mesh_run *m)
 {
     memset(m, 0, sizeof *m);
-    gal_rod_params p;
-    gal_statics_spec spec;
-    double value;
-    int want[GAL_FAMILY_COUNT];
-    scene_want(sc, want);
     double t0 = gal_wall_time();
-    int st = gal_model_rod_params(sc, &p, &spec, &value);
-    if (st) return st;
-    if ((st = gal_statics_solve(&p, spec, value, NULL, &m->eq)))
-        return gal_error(st, "%d elements: no equilibrium: %s", sc->model.elements, gal_error_message());
-    m->have_eq = 1;
+    int st;
+    if (!(m->model = gal_model_alloc(sc, &st))) return st;
+    if (!(m->data = gal_data_alloc(m->model))) return GAL_ENOMEM;
+    if ((st = gal_forward(m->model, m->data, GAL_STAGE_EQUILIBRIUM)))
+        return gal_error(st, "%d elements: %s", sc->model.elements, gal_error_message());
     m->t_statics = gal_wall_time() - t0;
-    if ((st = gal_modes_find(m->eq.rod, m->eq.q, want, 1000, &m->md)))
-        return gal_error(st, "%d elements: modes: %s", sc->model.elements, gal_error_message());
-    m->have_md = 1;
+    if ((st = gal_forward(m->model, m->data, GAL_STAGE_MODES)))
+        return gal_error(st, "%d elements: %s", sc->model.elements, gal_error_message());
+    m->eq = &m->data->eq, m->md = &m->data->md;
     m->t_total = gal_wall_time() - t0;
     return GAL_OK;
 }
@@ -181,7 +178,7 @@ static int study_elements(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
     mesh_run ref;
     int st = mesh_timed(&s, 1, &ref);
     if (st) { mesh_clear(&ref); return gal_error(st, "elements: the reference mesh: %s", gal_error_message()); }
-    double fs = string_hz(sc, ref.eq.horizontal_tension);
+    double fs = string_hz(sc, ref.eq->horizontal_tension);
     r->string_hz = fs;
     int want[GAL_FAMILY_COUNT];
     scene_want(sc, want);
@@ -205,17 +202,17 @@ static int study_elements(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
         double ef = 0;
         for (int f = 0; f < 3; f++)
             for (int k = 0; k < want[f]; k++) {
-                double a = family_hz(&pm->md, f, k, 1), b = family_hz(&ref.md, f, k, 1);
+                double a = family_hz(pm->md, f, k, 1), b = family_hz(ref.md, f, k, 1);
                 if (isfinite(b)) ef = fmax(ef, gal_acc_relerr(a, b));
             }
         w->err_frequency = ef;
-        w->err_sag = gal_acc_relerr(pm->eq.sag, ref.eq.sag);
-        w->err_tension = gal_acc_relerr(pm->eq.horizontal_tension, ref.eq.horizontal_tension);
+        w->err_sag = gal_acc_relerr(pm->eq->sag, ref.eq->sag);
+        w->err_tension = gal_acc_relerr(pm->eq->horizontal_tension, ref.eq->horizontal_tension);
         w->error = fmax(ef, fmax(w->err_sag, w->err_tension));
         w->wall_time_s = pm->t_total;
         w->build_time_s = pm->t_statics;
         w->reference = isref;
-        w->frequency_hz = family_hz(&pm->md, GAL_FAMILY_HORIZONTAL, 0, 0);
+        w->frequency_hz = family_hz(pm->md, GAL_FAMILY_HORIZONTAL, 0, 0);
         w->string_error = gal_acc_relerr(w->frequency_hz, fs);
         if (!isfinite(fs)) w->string_error = NAN;
         if (!isref) mesh_clear(&m);
@@ -232,8 +229,8 @@ static int scene_fhi(const gal_scene *sc, double *fhi)
     int st = mesh_solve(sc, &m);
     *fhi = 0;
     if (!st)
-        for (int i = 0; i < m.md.n; i++)
-            if (m.md.mode[i].selected) *fhi = fmax(*fhi, m.md.mode[i].frequency_hz);
+        for (int i = 0; i < m.md->n; i++)
+            if (m.md->mode[i].selected) *fhi = fmax(*fhi, m.md->mode[i].frequency_hz);
     mesh_clear(&m);
     if (!st && !(*fhi > 0)) st = gal_error(GAL_EFAIL, "no selected mode with a positive frequency");
     return st;

@@ -1,14 +1,17 @@
 /* cli/simulate.c: `gallop simulate SCENE [--model reduced|full] [-o DIR] [--set s.k=v]...` and
- * `gallop compare SCENE [-o DIR]` (issues 5, 6): trace.csv and summary.json of a galloping run;
- * both models on the same equilibrium, loads and wind, compare.csv and summary.json. */
+ * `gallop compare SCENE [-o DIR]` (issues 5, 6): the pipeline to the start of a run, then a run by
+ * either integrator: trace.csv and summary.json; both integrators on the same model and data (the
+ * same equilibrium, loads and wind), compare.csv and summary.json. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 #include "gallop.h"
-#include "gallop/scene/scene.h"
+#include "gallop/model/model.h"
+#include "gallop/run/forward.h"
 #include "gallop/run/sim.h"
+#include "gallop/scene/scene.h"
 #include "gallop/output/simreport.h"
 
 static int fail(const char *cmd, int st)
@@ -25,6 +28,16 @@ static void print_run(const char *label, const gal_sim_result *r, const gal_sim_
            m->peak_to_peak[0], m->peak_to_peak[3], m->time_to_steady_s);
 }
 
+/* The scene's model and its data forwarded to the start of a run. */
+static int setup(const gal_scene *sc, gal_model **m, gal_data **d)
+{
+    int st;
+    *d = NULL;
+    if (!(*m = gal_model_alloc(sc, &st))) return st;
+    if (!(*d = gal_data_alloc(*m))) return GAL_ENOMEM;
+    return gal_forward(*m, *d, GAL_STAGE_START);
+}
+
 int gal_cli_simulate(int argc, char **argv)
 {
     gal_scene sc;
@@ -32,33 +45,32 @@ int gal_cli_simulate(int argc, char **argv)
     static const char *const opts[] = {"--model", NULL};
     int rc = gal_cli_load_scene_opts(argc, argv, &sc, &outdir, opts, vals);
     if (rc) return rc;
-    gal_model_kind kind = GAL_MODEL_REDUCED;
+    const gal_integrator_type *T = &gal_integrator_reduced;
     if (vals[0]) {
-        if (!strcmp(vals[0], "full")) kind = GAL_MODEL_FULL;
+        if (!strcmp(vals[0], "full")) T = &gal_integrator_full;
         else if (strcmp(vals[0], "reduced")) {
             fprintf(stderr, "gallop simulate: --model %s; allowed: reduced, full\n", vals[0]);
             return 2;
         }
     }
-    gal_sim_setup s;
-    int st = gal_sim_setup_init(&s, &sc, kind == GAL_MODEL_REDUCED);
-    if (st) { gal_sim_setup_clear(&s); return fail("simulate", st); }
+    gal_model *m;
+    gal_data *d;
+    gal_run_opts o;
+    gal_run_opts_from_scene(&sc, &o);
     gal_sim_result r;
-    st = gal_sim_run(&s, kind, &r);
-    if (st) {
-        gal_sim_result_clear(&r);
-        gal_sim_setup_clear(&s);
-        return fail("simulate", st);
-    }
-    gal_sim_measures m;
-    st = gal_sim_measure(&r, gal_sim_mid_probe(&r), -1, &m);
+    memset(&r, 0, sizeof r);
+    int st = setup(&sc, &m, &d);
+    if (!st) st = gal_run(m, d, T, &o, &r);
+    gal_sim_measures ms;
+    if (!st) st = gal_sim_measure(&r, gal_sim_mid_probe(&r), -1, &ms);
     if (!st) st = gal_sim_write(outdir, &sc, &r);
     if (!st) {
-        print_run(kind == GAL_MODEL_FULL ? "full" : "reduced", &r, &m);
+        print_run(T->name, &r, &ms);
         printf("files: %s/{trace.csv,summary.json}\n", outdir);
     }
     gal_sim_result_clear(&r);
-    gal_sim_setup_clear(&s);
+    gal_data_free(d);
+    gal_model_free(m);
     return st ? fail("simulate", st) : 0;
 }
 
@@ -68,13 +80,16 @@ int gal_cli_compare(int argc, char **argv)
     const char *outdir = NULL;
     int rc = gal_cli_load_scene(argc, argv, &sc, &outdir);
     if (rc) return rc;
-    gal_sim_setup s;
-    int st = gal_sim_setup_init(&s, &sc, 1);
-    if (st) { gal_sim_setup_clear(&s); return fail("compare", st); }
+    gal_model *m;
+    gal_data *d;
+    gal_run_opts o;
+    gal_run_opts_from_scene(&sc, &o);
     gal_sim_result full, red;
+    memset(&full, 0, sizeof full);
     memset(&red, 0, sizeof red);
-    st = gal_sim_run(&s, GAL_MODEL_FULL, &full);
-    if (!st) st = gal_sim_run(&s, GAL_MODEL_REDUCED, &red);
+    int st = setup(&sc, &m, &d);
+    if (!st) st = gal_run(m, d, &gal_integrator_full, &o, &full);
+    if (!st) st = gal_run(m, d, &gal_integrator_reduced, &o, &red);
     gal_compare_figures c;
     if (!st) st = gal_sim_write_compare(outdir, &sc, &full, &red, &c);
     if (!st) {
@@ -90,6 +105,7 @@ int gal_cli_compare(int argc, char **argv)
     }
     gal_sim_result_clear(&full);
     gal_sim_result_clear(&red);
-    gal_sim_setup_clear(&s);
+    gal_data_free(d);
+    gal_model_free(m);
     return st ? fail("compare", st) : 0;
 }

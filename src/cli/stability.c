@@ -10,10 +10,10 @@
 #include "gallop.h"
 #include "gallop/model/model.h"
 #include "gallop/modes/modes.h"
+#include "gallop/run/forward.h"
 #include "gallop/scene/scene.h"
 #include "gallop/analysis/stability.h"
 #include "gallop/output/stabreport.h"
-#include "gallop/statics/statics.h"
 
 typedef struct {
     const gal_scene *sc;
@@ -37,26 +37,18 @@ static int vertical_modes(stab *S)
                          nv, (int)(sizeof S->omega / sizeof S->omega[0]));
     S->nm = 0;
     if (nv == 0) return GAL_OK;
-    gal_rod_params p;
-    gal_statics_spec spec;
-    double value;
-    int st = gal_model_rod_params(sc, &p, &spec, &value);
-    if (st) return st;
-    gal_equilibrium eq;
-    if ((st = gal_statics_solve(&p, spec, value, NULL, &eq)))
-        return gal_error(st, "%s: no equilibrium: %s", sc->path, gal_error_message());
-    int want[GAL_FAMILY_COUNT] = {nv, 0, 0, 0};
-    gal_modes md;
-    st = gal_modes_find(eq.rod, eq.q, want, 1000, &md);
-    if (st) {
-        gal_equilibrium_clear(&eq);
-        return gal_error(st, "%s: modes: %s", sc->path, gal_error_message());
-    }
-    for (int k = 0; k < md.n && S->nm < nv; k++)
-        if (md.mode[k].family == GAL_FAMILY_VERTICAL && md.mode[k].selected) S->omega[S->nm++] = md.mode[k].omega;
-    gal_modes_clear(&md);
-    gal_equilibrium_clear(&eq);
-    return GAL_OK;
+    gal_scene vs = *sc; /* the model of the span with its vertical modes alone selected */
+    vs.model.modes_horizontal = vs.model.modes_torsional = 0;
+    int st;
+    gal_model *m = gal_model_alloc(&vs, &st);
+    gal_data *d = m ? gal_data_alloc(m) : NULL;
+    if (m && !d) st = GAL_ENOMEM;
+    if (!st) st = gal_forward(m, d, GAL_STAGE_MODES);
+    for (int k = 0; !st && k < d->md.n && S->nm < nv; k++)
+        if (d->md.mode[k].family == GAL_FAMILY_VERTICAL && d->md.mode[k].selected) S->omega[S->nm++] = d->md.mode[k].omega;
+    gal_data_free(d);
+    gal_model_free(m);
+    return st;
 }
 
 /* the sweep, the files and the table */

@@ -1,12 +1,19 @@
-/* model.c: scene -> rod parameters (DESIGN.md "The rod": only what the scene calls for). */
+/* model.c: scene -> model (model.h; DESIGN.md "The rod", "Aerodynamics", "Wind": only what the
+ * scene calls for). */
 #include "gallop/model/model.h"
 #include "gallop/base/core.h"
+#include "gallop/loads/windfield.h"
+#include "gallop/model/tables.h"
 
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
-int gal_model_rod_params(const gal_scene *sc, gal_rod_params *p, gal_statics_spec *spec, double *value)
+/* The rod of the span: its parameters and equilibrium specification. */
+static int rod_params(const gal_scene *sc, gal_model_rod *r)
 {
-    memset(p, 0, sizeof *p);
+    gal_rod_params *p = &r->p;
+    memset(r, 0, sizeof *r);
     if (!sc->effect[GAL_FX_EXTENSION])
         return gal_error(GAL_EINPUT, "%s: [effects] extension = off: a rod without axial stiffness "
                          "has no sagged equilibrium; allowed: on (give a large axial_stiffness for a "
@@ -30,10 +37,80 @@ int gal_model_rod_params(const gal_scene *sc, gal_rod_params *p, gal_statics_spe
         p->ecc_angle = GAL_PI - sc->ice.attack_angle;
     }
     switch (sc->span.spec) {
-    case GAL_SPEC_TENSION: *spec = GAL_BY_TENSION, *value = sc->span.horizontal_tension; break;
-    case GAL_SPEC_SAG: *spec = GAL_BY_SAG, *value = sc->span.sag; break;
-    default: *spec = GAL_BY_LENGTH, *value = sc->span.unstretched_length; break;
+    case GAL_SPEC_TENSION: r->spec = GAL_BY_TENSION, r->spec_value = sc->span.horizontal_tension; break;
+    case GAL_SPEC_SAG: r->spec = GAL_BY_SAG, r->spec_value = sc->span.sag; break;
+    default: r->spec = GAL_BY_LENGTH, r->spec_value = sc->span.unstretched_length; break;
     }
-    p->unstretched_length = *spec == GAL_BY_LENGTH ? *value : 0.0;
+    p->unstretched_length = r->spec == GAL_BY_LENGTH ? r->spec_value : 0.0;
     return GAL_OK;
+}
+
+/* The loads' configuration: only the effects the scene asks for. */
+static void loads_config(const gal_scene *sc, gal_loads *L)
+{
+    memset(L, 0, sizeof *L);
+    L->flags = (sc->effect[GAL_FX_AERO_DRAG] ? GAL_AERO_DRAG : 0u) | (sc->effect[GAL_FX_AERO_LIFT] ? GAL_AERO_LIFT : 0u) |
+               (sc->effect[GAL_FX_AERO_MOMENT] && sc->effect[GAL_FX_TORSION] ? GAL_AERO_MOMENT : 0u);
+    L->aero_damping = sc->effect[GAL_FX_AERO_DAMPING];
+    L->rho = sc->wind.air_density;
+    L->diam = sc->conductor.diameter;
+    L->attack_angle = sc->ice.present ? sc->ice.attack_angle : 0.0;
+    L->speed = sc->wind.speed;
+    L->dir[0] = cos(sc->wind.yaw), L->dir[1] = sin(sc->wind.yaw), L->dir[2] = 0;
+    L->ramp_time = sc->simulation.wind_ramp;
+    L->reverse_time = sc->simulation.wind_reverse_time;
+}
+
+/* The loads, their table and the turbulent field's parameters. */
+static int loads(const gal_scene *sc, gal_model *m)
+{
+    loads_config(sc, &m->loads);
+    if (!(m->loads.flags && sc->wind.speed > 0)) return GAL_OK;
+    int st = gal_model_aero_table(sc, &m->table); /* the scene's, or a bare conductor's */
+    if (st) return st;
+    m->loads.table = m->table;
+    m->turbulence = sc->effect[GAL_FX_TURBULENCE];
+    if (m->turbulence) return gal_windfield_params(sc, &m->wind); /* the same field as `gallop wind` */
+    return GAL_OK;
+}
+
+gal_model *gal_model_free(gal_model *m)
+{
+    if (m) {
+        free(m->rod);
+        free(m->coupling);
+        gal_aero_table_free(m->table);
+        free(m);
+    }
+    return NULL;
+}
+
+gal_model *gal_model_alloc(const gal_scene *sc, int *status)
+{
+    int st = GAL_OK;
+    gal_model *m = calloc(1, sizeof *m);
+    if (!m || !(m->rod = calloc(1, sizeof *m->rod))) {
+        st = gal_error(GAL_ENOMEM, "out of memory for the model of %s", sc->path);
+        goto done;
+    }
+    m->sc = *sc;
+    m->nrods = 1;
+    if ((st = rod_params(sc, &m->rod[0]))) goto done;
+    gal_statics_default_opts(&m->statics);
+    m->want[GAL_FAMILY_VERTICAL] = sc->model.modes_vertical;
+    m->want[GAL_FAMILY_HORIZONTAL] = sc->model.modes_horizontal;
+    m->want[GAL_FAMILY_TORSIONAL] = sc->effect[GAL_FX_TORSION] ? sc->model.modes_torsional : 0;
+    m->max_modes = GAL_MODES_MAX;
+    m->damping_ratio = sc->effect[GAL_FX_DAMPING] ? sc->conductor.damping_ratio : 0;
+    if ((st = loads(sc, m))) goto done;
+    m->start_mean_wind = sc->simulation.start_mean_wind;
+    gal_reduced_default_opts(&m->reduced);
+    m->reduced.amplitude_m = sc->model.identification_amplitude;
+    m->reduced.amplitude_rad = sc->model.identification_twist;
+    m->nprobe = sc->simulation.nprobes;
+    memcpy(m->probe, sc->simulation.probes, sizeof m->probe);
+done:
+    if (status) *status = st;
+    if (st) return gal_model_free(m);
+    return m;
 }

@@ -16,15 +16,6 @@ void gal_rom_sim_default_opts(gal_rom_sim_opts *o)
     o->check_from = 0;
 }
 
-/* as sim.c: zeta = a/(2w) + b w/2 at the lowest and highest selected modes */
-static void rayleigh(double zeta, double w1, double w2, double *a, double *b)
-{
-    if (zeta <= 0) { *a = *b = 0; return; }
-    if (!(w2 > w1 * 1.0001)) w2 = 3 * w1;
-    *a = 2 * zeta * w1 * w2 / (w1 + w2);
-    *b = 2 * zeta / (w1 + w2);
-}
-
 /* One sample row (horizontal, vertical, along, twist per probe) and the support tensions. */
 static void sample(const gal_rom *m, const gal_sim_result *res, long i)
 {
@@ -78,8 +69,9 @@ static int run_loop(gal_rom *m, const gal_rom_sim_opts *o, gal_sim_result *res, 
 int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result *res, gal_rom_sim_info *info)
 {
     const gal_scene *sc = s->sc;
-    const gal_rod *rod = s->eq.rod;
-    const gal_modes *md = &s->md;
+    const gal_data *d = s->data;
+    const gal_rod *rod = d->eq.rod;
+    const gal_modes *md = &d->md;
     gal_rom_sim_opts od;
     if (!o) gal_rom_sim_default_opts(&od), o = &od;
     memset(res, 0, sizeof *res);
@@ -88,13 +80,11 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     res->nprobe = sc->simulation.nprobes;
     memcpy(res->probe, sc->simulation.probes, sizeof res->probe);
     int sel[64], r = 0;
-    double fhi = 0, wmin = INFINITY, wmax = 0;
+    double fhi = 0;
     for (int k = 0; k < md->n && r < 64; k++)
         if (md->mode[k].selected) {
             sel[r++] = k;
             fhi = fmax(fhi, md->mode[k].frequency_hz);
-            if (md->mode[k].omega > 0) wmin = fmin(wmin, md->mode[k].omega);
-            wmax = fmax(wmax, md->mode[k].omega);
         }
     double dt_out = sc->simulation.output_interval;
     if (!(dt_out > 0)) dt_out = fmin(0.05, 1.0 / (10 * fhi));
@@ -114,12 +104,13 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     ro.derivatives = o->derivatives;
     ro.h = dt_out / sub;
     ro.rho_inf = sc->simulation.rho_inf;
-    rayleigh(sc->effect[GAL_FX_DAMPING] ? sc->conductor.damping_ratio : 0, wmin, wmax, &ro.rayleigh_mass, &ro.rayleigh_stiffness);
+    /* the structural damping the pipeline fitted to the selected modes */
+    ro.rayleigh_mass = d->rayleigh_mass, ro.rayleigh_stiffness = d->rayleigh_stiffness;
     gal_force F = {0};
-    if (s->loads.table) F.eval = gal_loads_full, F.ctx = &s->loads;
-    gal_rom *m = gal_rom_alloc(rod, s->eq.q, md, sel, r, &ro, &F);
+    if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */
+    gal_rom *m = gal_rom_alloc(rod, d->eq.q, md, sel, r, &ro, &F);
     if (!m) return GAL_EFAIL;
-    int st = gal_rom_start(m, 0.0, s->q_start, NULL);
+    int st = gal_rom_start(m, 0.0, d->q_start, NULL);
     info->build_time_s = res->build_time_s = gal_wall_time() - tb;
     info->basis = res->basis = m->r;
     double t0 = gal_wall_time();

@@ -1,34 +1,17 @@
-/* sim.h: a galloping run of a scene (issues 5 and 6): the full model (generalized-alpha on the
- * whole rod) or the reduced model (the modes with the condensed restoring force), the same
- * equilibrium, the same loads and the same wind, traces at the probes. */
+/* sim.h: a galloping run of a model (issues 5 and 6): the pipeline forwarded as far as the
+ * integrator needs (run/forward.h), then one loop over the output times whatever the integrator
+ * (run/integrator.h): the full model (generalized-alpha on the whole rod) or the reduced model (the
+ * modes with the condensed restoring force), on the same equilibrium, loads and wind; traces at
+ * the probes. */
 #ifndef GALLOP_SIM_H
 #define GALLOP_SIM_H
 
-#include "gallop/loads/loads.h"
-#include "gallop/modes/modes.h"
-#include "gallop/reduced/reduced.h"
+#include "gallop/run/integrator.h"
 #include "gallop/scene/scene.h"
-#include "gallop/statics/statics.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-typedef enum { GAL_MODEL_FULL, GAL_MODEL_REDUCED } gal_model_kind;
-
-/* What the two models share: equilibrium, modes, loads and wind (built once per scene). */
-typedef struct gal_sim_setup {
-    const gal_scene *sc;
-    gal_equilibrium eq;
-    gal_modes md;          /* found when the reduced model is asked for */
-    int have_modes;
-    gal_aero_table *table; /* owned */
-    gal_loads loads;
-    double *wind_u;        /* owned turbulence field, or NULL */
-    double *q_start;       /* owned: the start (the equilibrium, or under the mean wind) */
-    double setup_time_s;
-    double wind_time_s;
-} gal_sim_setup;
 
 typedef struct gal_sim_result {
     gal_model_kind kind;
@@ -47,10 +30,29 @@ typedef struct gal_sim_result {
     int load_cases;                /* reduced: identification load cases */
 } gal_sim_result;
 
+/* The run controls of a scene's [simulation]. */
+void gal_run_opts_from_scene(const gal_scene *sc, gal_run_opts *o);
+
+/* Run the model with integrator T: d forwarded to T->needs, samples every output interval from 0
+ * to the duration. GAL_EINPUT when the output interval cannot resolve the highest selected mode;
+ * the integrator's status when it fails. res is filled (free it with gal_sim_result_clear). */
+int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const gal_run_opts *o,
+            gal_sim_result *res);
+void gal_sim_result_clear(gal_sim_result *res);
+
+/* A scene's model and data for runs whose controls are read from the scene at each run (a sweep
+ * changes them between runs of one set-up): the data forwarded to the start. */
+typedef struct gal_sim_setup {
+    const gal_scene *sc;
+    gal_model *model;
+    gal_data *data;
+    double setup_time_s;           /* model and pipeline to the start */
+} gal_sim_setup;
+
+/* need_modes is ignored: the modes are always found (the damping is fitted to them). */
 int gal_sim_setup_init(gal_sim_setup *s, const gal_scene *sc, int need_modes);
 void gal_sim_setup_clear(gal_sim_setup *s);
 int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res);
-void gal_sim_result_clear(gal_sim_result *res);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,81 @@
+/* forward.h: the pipeline (MuJoCo's mj_forward): the stages of an analysis run in a fixed order on
+ * a const model (model/model.h), each writing what it finds into a gal_data, up to the stage a
+ * caller asks for:
+ *   equilibrium  statics: the sagged equilibrium, the unstretched length it solves for (statics.h)
+ *   modes        the modes about it, those the scene selects marked (modes.h), and the Rayleigh
+ *                coefficients of the structural damping fitted to them
+ *   wind         the loads on the equilibrium rod, with the turbulent wind field when there is one
+ *   start        the start of a run: the equilibrium, or the equilibrium under the mean wind
+ *   reduced      the reduced model on the selected modes, observing the probes (reduced.h)
+ * Every command calls it: `gallop modes` to the modes, `stability` to the modes, `accuracy` and the
+ * runs (`simulate`, `compare`, run/sim.h) as far as their integrator needs. */
+#ifndef GALLOP_FORWARD_H
+#define GALLOP_FORWARD_H
+
+#include "gallop/loads/loads.h"
+#include "gallop/model/model.h"
+#include "gallop/modes/modes.h"
+#include "gallop/reduced/reduced.h"
+#include "gallop/statics/statics.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    GAL_STAGE_NONE = 0,
+    GAL_STAGE_EQUILIBRIUM,
+    GAL_STAGE_MODES,
+    GAL_STAGE_WIND,
+    GAL_STAGE_START,
+    GAL_STAGE_REDUCED,
+    GAL_STAGE_COUNT
+} gal_stage;
+
+extern const char *const gal_stage_names[GAL_STAGE_COUNT];
+
+#define GAL_BASIS_MAX 64 /* selected modes taken into the reduced basis (gal_reduced_build allows 40) */
+#define GAL_OBS_MAX (4 * GAL_MAX_PROBES + 6) /* the reduced model's observations: 4 per probe, 6 support */
+
+/* Everything the stages find or change (the model holds what they read). */
+typedef struct gal_data {
+    const gal_model *model;  /* the model the data were made for */
+    gal_stage stage;         /* the last stage done */
+    /* equilibrium: the working rod at the unstretched length found (owned by eq), its
+     * configuration, the Newton and load-stepping (bending stiffness continuation) counts */
+    gal_equilibrium eq;
+    /* modes */
+    gal_modes md;
+    double rayleigh_mass;    /* 1/s, a of C = a M + b K0 */
+    double rayleigh_stiffness; /* s, b */
+    /* wind: the model's loads on eq.rod, with the turbulent field (owned, nt x nx) or none */
+    gal_loads loads;
+    double *wind_u;
+    /* start */
+    double *q_start;         /* nq */
+    int mean_wind_iterations;/* Newton iterations of the equilibrium under the mean wind */
+    /* reduced */
+    gal_reduced *rm;         /* owned, or NULL */
+    int basis;               /* modes in the basis */
+    int sel[GAL_BASIS_MAX];  /* their indices in md */
+    int nobs;
+    gal_obs obs[GAL_OBS_MAX];/* the probes (4 each from obs_probe: horizontal, vertical, along,
+                              * twist) and the inner nodes of the support elements (3 each from
+                              * obs_support) */
+    int obs_probe, obs_support;
+    double stage_time_s[GAL_STAGE_COUNT]; /* wall time of each stage */
+} gal_data;
+
+gal_data *gal_data_alloc(const gal_model *m);
+gal_data *gal_data_free(gal_data *d);
+
+/* Run the stages after d->stage up to `upto` (stages already done in d are not repeated: the model
+ * does not change, so neither would they). The status of the first stage that fails, its message
+ * naming the scene; d then holds the stages before it. */
+int gal_forward(const gal_model *m, gal_data *d, gal_stage upto);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,61 @@
+/* integrator.h: the two integrators of a galloping run behind one interface (GSL's
+ * gsl_odeiv2_step_type): a const table of methods that start from the pipeline's data, bring the
+ * state to each output time, observe the probes and the support tensions there, and count what
+ * they did; run/sim.h drives either with one loop.
+ *   gal_integrator_full     generalized-alpha on the whole rod (full/dynamics.h), fixed steps
+ *   gal_integrator_reduced  the reduced model (reduced/rdyn.h), adaptive steps and Hermite
+ *                           interpolation between them */
+#ifndef GALLOP_INTEGRATOR_H
+#define GALLOP_INTEGRATOR_H
+
+#include "gallop/run/forward.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum { GAL_MODEL_FULL, GAL_MODEL_REDUCED } gal_model_kind;
+
+/* The controls of a run (they may change between runs of one model: a sweep of time steps). */
+typedef struct gal_run_opts {
+    double duration;         /* s */
+    double time_step;        /* s, full model; 0: chosen from the highest selected mode */
+    double output_interval;  /* s; 0: chosen */
+    double rho_inf;          /* -, full model's numerical dissipation (1 = none) */
+    double tolerance;        /* -, reduced model's relative error per step */
+} gal_run_opts;
+
+/* What an integrator counts. */
+typedef struct gal_run_counters {
+    double time_step_s;      /* full: the step; reduced: mean adaptive step */
+    long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
+    int basis;               /* reduced: modes in the basis */
+    int load_cases;          /* reduced: identification load cases */
+    double build_time_s;     /* reduced: identification */
+} gal_run_counters;
+
+typedef struct gal_integrator_type {
+    const char *name;        /* "full", "reduced" */
+    gal_model_kind kind;
+    gal_stage needs;         /* the pipeline stage its start reads */
+    /* The integrator at the start of a run (d forwarded to `needs`) sampled every dt_out s, fhi the
+     * highest selected mode frequency (Hz). A status; *state NULL on failure. */
+    int (*alloc)(const gal_model *m, const gal_data *d, const gal_run_opts *o, double dt_out, double fhi,
+                 void **state);
+    /* The state at t_out (the first call at 0, then increasing; t_end the end of the run). */
+    int (*advance)(void *state, double t_out, double t_end);
+    /* At the state reached: the probes' displacements from the equilibrium (4 per probe:
+     * horizontal, vertical, along in m, twist in deg) and the left and right support tensions (N). */
+    void (*observe)(void *state, double *probes, double tension[2]);
+    void (*counters)(const void *state, gal_run_counters *c);
+    void (*free)(void *state);
+} gal_integrator_type;
+
+extern const gal_integrator_type gal_integrator_full;
+extern const gal_integrator_type gal_integrator_reduced;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

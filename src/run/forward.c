@@ -1,0 +1,177 @@
+/* forward.c: the pipeline, its stages in their order on a const model (forward.h). */
+#include "gallop/run/forward.h"
+#include "gallop/base/core.h"
+#include "gallop/loads/windfield.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "run/probes.h"
+
+const char *const gal_stage_names[GAL_STAGE_COUNT] = {"none", "equilibrium", "modes", "wind", "start", "reduced"};
+
+gal_data *gal_data_alloc(const gal_model *m)
+{
+    gal_data *d = calloc(1, sizeof *d);
+    if (!d) {
+        gal_error(GAL_ENOMEM, "out of memory for the data of %s", m->sc.path);
+        return NULL;
+    }
+    d->model = m;
+    return d;
+}
+
+gal_data *gal_data_free(gal_data *d)
+{
+    if (d) {
+        gal_equilibrium_clear(&d->eq);
+        gal_modes_clear(&d->md);
+        free(d->wind_u);
+        free(d->q_start);
+        gal_reduced_free(d->rm);
+        free(d);
+    }
+    return NULL;
+}
+
+/* ---- equilibrium ---- */
+
+static int stage_equilibrium(const gal_model *m, gal_data *d)
+{
+    const gal_model_rod *r = &m->rod[0];
+    gal_equilibrium_clear(&d->eq);
+    int st = gal_statics_solve(&r->p, r->spec, r->spec_value, &m->statics, &d->eq);
+    if (st) return gal_error(st, "%s: no equilibrium: %s", m->sc.path, gal_error_message());
+    return GAL_OK;
+}
+
+/* ---- modes, and the damping fitted to them ---- */
+
+/* Rayleigh coefficients giving the damping ratio zeta at w1 and w2: zeta = a/(2w) + b w/2. */
+static void rayleigh(double zeta, double w1, double w2, double *a, double *b)
+{
+    if (zeta <= 0) { *a = *b = 0; return; }
+    if (!(w2 > w1 * 1.0001)) w2 = 3 * w1;
+    *a = 2 * zeta * w1 * w2 / (w1 + w2);
+    *b = 2 * zeta / (w1 + w2);
+}
+
+static int stage_modes(const gal_model *m, gal_data *d)
+{
+    const int *want = m->want;
+    gal_modes_clear(&d->md);
+    if (want[GAL_FAMILY_VERTICAL] + want[GAL_FAMILY_HORIZONTAL] + want[GAL_FAMILY_TORSIONAL] == 0)
+        return gal_error(GAL_EINPUT, "%s: [model] selects no modes; allowed: at least one of modes_vertical, "
+                         "modes_horizontal, modes_torsional (torsional with torsion on)", m->sc.path);
+    int st = gal_modes_find(d->eq.rod, d->eq.q, want, m->max_modes, &d->md);
+    if (st) return gal_error(st, "%s: %s", m->sc.path, gal_error_message());
+    double wmin = INFINITY, wmax = 0;
+    for (int k = 0; k < d->md.n; k++)
+        if (d->md.mode[k].selected) {
+            if (d->md.mode[k].omega > 0) wmin = fmin(wmin, d->md.mode[k].omega);
+            wmax = fmax(wmax, d->md.mode[k].omega);
+        }
+    rayleigh(m->damping_ratio, wmin, wmax, &d->rayleigh_mass, &d->rayleigh_stiffness);
+    return GAL_OK;
+}
+
+/* ---- the loads on the equilibrium rod, and the turbulent wind field ---- */
+
+static int stage_wind(const gal_model *m, gal_data *d)
+{
+    free(d->wind_u);
+    d->wind_u = NULL;
+    d->loads = m->loads;
+    d->loads.rod = d->eq.rod;
+    /* the along-wind turbulence on the field's points along the span, for the run's duration: the
+     * same field for both integrators (and for `gallop wind`) */
+    if (d->loads.table && m->turbulence) return gal_windfield_sample(&m->sc, &d->loads, &d->wind_u);
+    return GAL_OK;
+}
+
+/* ---- the start of a run ---- */
+
+static int stage_start(const gal_model *m, gal_data *d)
+{
+    const gal_rod *rod = d->eq.rod;
+    free(d->q_start);
+    d->q_start = malloc((size_t)rod->nq * sizeof(double));
+    if (!d->q_start) return gal_error(GAL_ENOMEM, "out of memory");
+    memcpy(d->q_start, d->eq.q, (size_t)rod->nq * sizeof(double));
+    d->mean_wind_iterations = 0;
+    if (!(m->start_mean_wind && d->loads.table)) return GAL_OK;
+    /* under the mean wind, which then blows at full speed from t = 0 */
+    double tol = 1e-6 * fmax(d->eq.horizontal_tension, 1.0) / rod->p.elements;
+    int st = gal_loads_static(d->eq.rod, d->q_start, &d->loads, tol, 100, &d->mean_wind_iterations);
+    if (st) return gal_error(st, "%s: no equilibrium under the mean wind: %s", m->sc.path, gal_error_message());
+    d->loads.ramp_time = 0;
+    return GAL_OK;
+}
+
+/* ---- the reduced model ---- */
+
+/* What the reduced model observes: the probes (4 each: horizontal, vertical, along, twist) and the
+ * support elements' inner nodes (3 each), for the traces and the support tensions. (The loads'
+ * kinematics from the expansion, gal_rdyn_quadrature_obs, changed the galloping amplitudes of
+ * data/scenes/iced_gallop.ini by 0.2% at three times the cost: the loads use the linear modes at
+ * their points.) */
+static void observations(const gal_model *m, gal_data *d)
+{
+    const gal_rod *rod = d->eq.rod;
+    gal_obs *obs = d->obs;
+    int no = 0;
+    d->obs_probe = no;
+    for (int k = 0; k < m->nprobe; k++) {
+        gal_probe a = gal_probe_locate(rod, m->probe[k]);
+        /* horizontal (y), vertical (z), along (x), twist */
+        obs[no + 0] = (gal_obs){{3 * a.e + 1, 3 * (a.e + 1) + 1}, {1 - a.xi, a.xi}};
+        obs[no + 1] = (gal_obs){{3 * a.e + 2, 3 * (a.e + 1) + 2}, {1 - a.xi, a.xi}};
+        obs[no + 2] = (gal_obs){{3 * a.e, 3 * (a.e + 1)}, {1 - a.xi, a.xi}};
+        obs[no + 3] = rod->p.torsion ? (gal_obs){{3 * rod->nn + a.e0, 3 * rod->nn + a.e1}, {1 - a.w1, a.w1}}
+                                     : (gal_obs){{-1, -1}, {0, 0}};
+        no += 4;
+    }
+    d->obs_support = no;
+    for (int c = 0; c < 3; c++) obs[no++] = (gal_obs){{3 + c, -1}, {1, 0}};
+    for (int c = 0; c < 3; c++) obs[no++] = (gal_obs){{3 * (rod->nn - 2) + c, -1}, {1, 0}};
+    d->nobs = no;
+}
+
+static int stage_reduced(const gal_model *m, gal_data *d)
+{
+    d->rm = gal_reduced_free(d->rm);
+    d->basis = 0;
+    for (int k = 0; k < d->md.n && d->basis < GAL_BASIS_MAX; k++)
+        if (d->md.mode[k].selected) d->sel[d->basis++] = k;
+    observations(m, d);
+    gal_reduced_opts ro = m->reduced;
+    if (!(ro.amplitude_m > 0)) ro.amplitude_m = fmax(1.0, d->eq.sag);
+    d->rm = gal_reduced_build(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, d->obs, d->nobs, &ro);
+    if (!d->rm) return gal_error(GAL_EFAIL, "%s: reduced model: %s", m->sc.path, gal_error_message());
+    return GAL_OK;
+}
+
+/* ---- the pipeline ---- */
+
+typedef int (*stage_fn)(const gal_model *m, gal_data *d);
+static const stage_fn stages[GAL_STAGE_COUNT] = {NULL, stage_equilibrium, stage_modes, stage_wind, stage_start,
+                                                 stage_reduced};
+
+int gal_forward(const gal_model *m, gal_data *d, gal_stage upto)
+{
+    if (upto < GAL_STAGE_NONE || upto >= GAL_STAGE_COUNT)
+        return gal_error(GAL_EINPUT, "pipeline: stage %d; allowed: %d to %d", (int)upto, GAL_STAGE_NONE, GAL_STAGE_COUNT - 1);
+    if (d->model != m) return gal_error(GAL_EINPUT, "pipeline: the data were made for another model");
+    if (m->nrods != 1 || m->ncouplings != 0)
+        return gal_error(GAL_EINPUT, "%s: %d rods and %d couplings: the pipeline solves one rod (bundles are to come)",
+                         m->sc.path, m->nrods, m->ncouplings);
+    for (int s = d->stage + 1; s <= (int)upto; s++) {
+        double t0 = gal_wall_time();
+        int st = stages[s](m, d);
+        d->stage_time_s[s] = gal_wall_time() - t0;
+        if (st) return st;
+        d->stage = (gal_stage)s;
+    }
+    return GAL_OK;
+}
