@@ -2,6 +2,7 @@
 #include "gallop/run/forward.h"
 #include "gallop/base/core.h"
 #include "gallop/loads/windfield.h"
+#include "gallop/model/damping.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -48,15 +49,6 @@ static int stage_equilibrium(const gal_model *m, gal_data *d)
 
 /* ---- modes, and the damping fitted to them ---- */
 
-/* Rayleigh coefficients giving the damping ratio zeta at w1 and w2: zeta = a/(2w) + b w/2. */
-static void rayleigh(double zeta, double w1, double w2, double *a, double *b)
-{
-    if (zeta <= 0) { *a = *b = 0; return; }
-    if (!(w2 > w1 * 1.0001)) w2 = 3 * w1;
-    *a = 2 * zeta * w1 * w2 / (w1 + w2);
-    *b = 2 * zeta / (w1 + w2);
-}
-
 static int stage_modes(const gal_model *m, gal_data *d)
 {
     const int *want = m->want;
@@ -72,7 +64,8 @@ static int stage_modes(const gal_model *m, gal_data *d)
             if (d->md.mode[k].omega > 0) wmin = fmin(wmin, d->md.mode[k].omega);
             wmax = fmax(wmax, d->md.mode[k].omega);
         }
-    rayleigh(m->damping_ratio, wmin, wmax, &d->rayleigh_mass, &d->rayleigh_stiffness);
+    /* today's damping: Rayleigh, fitted to the ratio at the lowest and highest selected modes */
+    gal_damping_rayleigh_fit(m->damping_ratio, wmin, wmax, &d->rayleigh_mass, &d->rayleigh_stiffness);
     return GAL_OK;
 }
 
