@@ -125,7 +125,7 @@ key ice_ecc_huge            ice "eccentricity = 0.6"
 key ice_polar_negative      ice "polar_inertia = -1"
 key ice_attack_huge         ice "attack_angle = 200"
 key ice_table_missing       ice "aero_table = nosuch.csv"
-key ice_unknown_key         ice "thickness = 0.01"
+key ice_unknown_key         ice "colour = white"
 # ---- [wind] ----
 key wind_speed_negative     wind "speed = -1"
 key wind_speed_huge         wind "speed = 100"
