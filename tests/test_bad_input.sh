@@ -103,6 +103,15 @@ key span_tension_inf        span "horizontal_tension = inf"
 scene span_two_specs span "sag = 5" >/dev/null   # the second of the two is the one refused
 refused span_two_specs "$tmp/span_two_specs.ini" 5 "sag (line 3)"
 key span_ulength_negative   span "unstretched_length = -5"
+key span_rts_one            span "tension_rts = 1"
+key span_temperature_cold   span "temperature = -300"
+scene span_tension_and_rts span "tension_rts = 0.2" >/dev/null  # horizontal_tension now line 5
+refused span_tension_and_rts "$tmp/span_tension_and_rts.ini" 5 "tension_rts (line 3)"
+scene span_stringing_and_tension stringing "horizontal_tension = 20000" >/dev/null
+refused span_stringing_and_tension "$tmp/span_stringing_and_tension.ini" 19 "horizontal_tension (line 4)"
+printf '[span]\nlength = 200\n[stringing]\nsag = 5\n[conductor]\nname = Drake\n' >"$tmp/nostringtemp.ini"
+refused stringing_no_temperature "$tmp/nostringtemp.ini" 4 "[stringing] temperature"
+key stringing_temperature_alone stringing "temperature = 15" "stringing condition"
 key span_end_twist_bad      span "end_twist = sometimes"
 key span_unknown_key        span "lenght = 200"
 key span_no_equals          span "length 200" "length"
@@ -126,6 +135,14 @@ key ice_polar_negative      ice "polar_inertia = -1"
 key ice_attack_huge         ice "attack_angle = 200"
 key ice_table_missing       ice "aero_table = nosuch.csv"
 key ice_unknown_key         ice "colour = white"
+key ice_thickness_negative  ice "thickness = -0.01"
+key ice_density_huge        ice "density = 2000"
+printf '[span]\nlength = 200\nhorizontal_tension = 25000\n[conductor]\nname = Drake\n[ice]\nthickness = 0.01\nshape = no_such_shape\n' >"$tmp/noshape.ini"
+refused ice_shape_unknown "$tmp/noshape.ini" 8 "no_such_shape"
+scene ice_thickness_and_mass ice "thickness = 0.01" >/dev/null   # mass_per_length now line 9
+refused ice_thickness_and_mass "$tmp/ice_thickness_and_mass.ini" 9 "thickness (line 8)"
+scene ice_shape_and_table ice "shape = iced_d_shape" >/dev/null  # aero_table now line 10
+refused ice_shape_and_table "$tmp/ice_shape_and_table.ini" 10 "shape (line 8)"
 # ---- [wind] ----
 key wind_speed_negative     wind "speed = -1"
 key wind_speed_huge         wind "speed = 100"
@@ -138,6 +155,12 @@ key wind_seed_negative      wind "seed = -1"
 key wind_seed_fraction      wind "seed = 1.5"
 key wind_seed_huge          wind "seed = 99999999999999999999"
 key wind_unknown_key        wind "gust = 3"
+key wind_height_negative    wind "height = -1"
+key wind_terrain_bad        wind "terrain = V"
+key wind_terrain_no_height  wind "terrain = II" "height"
+scene wind_basic_and_speed wind "basic_speed = 20" >/dev/null   # speed now line 12
+refused wind_basic_and_speed "$tmp/wind_basic_and_speed.ini" 12 "basic_speed (line 11)"
+key wind_vertical_on        wind "vertical_turbulence = on"
 # ---- [effects] ----
 key fx_value_bad            effects "gravity = maybe"
 key fx_value_number         effects "aero_drag = 2"

@@ -111,7 +111,15 @@ int scn_wind_profile(pstate *ps)
     if (ps->given[K_VB] && !terrain)
         return scn_kfail(ps, K_VB, "no terrain; allowed: together with [wind] terrain or "
                          "roughness_length");
-    if (!ps->given[K_VCOH]) sc->wind.vertical_coherence_decay = sc->wind.coherence_decay;
+    /* the vertical component w is not generated yet (src/loads/wind.c makes u only): refused
+     * rather than silently ignored */
+    if (sc->wind.vertical_turbulence)
+        return scn_kfail(ps, K_VTURB, "the vertical turbulence component is not generated yet; "
+                         "allowed: off");
+    if (ps->given[K_VCOH])
+        return scn_kfail(ps, K_VCOH, "only with [wind] vertical_turbulence = on; allowed: not "
+                         "given");
+    sc->wind.vertical_coherence_decay = sc->wind.coherence_decay;
     if (!terrain) return 1;
     double z0, zmin, cr, iv, L;
     if (!roughness(ps, &z0, &zmin)) return 0;
