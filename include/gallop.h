@@ -11,8 +11,10 @@
 #include "gallop/base/sparse.h"
 /* scene: a scene file read, checked and resolved */
 #include "gallop/scene/scene.h"
+#include "gallop/scene/terrain.h"
 /* model: from the scene to the discretized span and its tables */
 #include "gallop/model/model.h"
+#include "gallop/model/stringing.h"
 #include "gallop/model/tables.h"
 #include "gallop/model/damping.h"
 #include "gallop/model/force.h"

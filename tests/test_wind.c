@@ -91,8 +91,9 @@ static gal_wind_params base_params(void)
 /* The target spectra integrate to sigma^2 = (I U)^2 (normalization of the stated forms). */
 static void test_spectra_normalized(void)
 {
-    gal_wind_spectrum kinds[] = {GAL_WIND_KAIMAL, GAL_WIND_DAVENPORT, GAL_WIND_VON_KARMAN};
-    for (int k = 0; k < 3; k++) {
+    gal_wind_spectrum kinds[] = {GAL_WIND_KAIMAL, GAL_WIND_DAVENPORT, GAL_WIND_VON_KARMAN,
+                                 GAL_WIND_EN1991};
+    for (int k = 0; k < 4; k++) {
         gal_wind_params p = base_params();
         p.spectrum = kinds[k];
         /* integral over log f: sum f S(f) dln f, from 1e-7 to 1e4 Hz, plus the f^(-2/3) tail */
@@ -112,6 +113,12 @@ static void test_spectra_normalized(void)
     CHECK_NEAR(gal_wind_length_scale(&p), 24.5, 1e-12);
     p.spectrum = GAL_WIND_DAVENPORT;
     CHECK_NEAR(gal_wind_length_scale(&p), 1200, 1e-12);
+    /* EN 1991-1-4 B.1, terrain II, z = 10 m: L = 300 (10/200)^0.52 = 63.181 m; B.2 at f -> 0:
+     * S = 6.8 sigma^2 L / U */
+    p.spectrum = GAL_WIND_EN1991;
+    CHECK_REL(gal_wind_length_scale(&p), 300 * pow(0.05, 0.52), 1e-12);
+    CHECK_NEAR(gal_wind_length_scale(&p), 63.181, 0.001);
+    CHECK_REL(gal_wind_psd(&p, 1e-9), 6.8 * pow(1.5, 2) * 300 * pow(0.05, 0.52) / 10, 1e-6);
     /* Kaimal at f -> 0: S = 4 sigma^2 L / U */
     p.spectrum = GAL_WIND_KAIMAL;
     CHECK_REL(gal_wind_psd(&p, 1e-9), 4 * pow(1.5, 2) * 56.7 / 10, 1e-6);

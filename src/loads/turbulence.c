@@ -19,6 +19,8 @@ int gal_windfield_params(const gal_scene *sc, gal_wind_params *p)
     p->intensity = sc->wind.intensity;
     p->spectrum = (gal_wind_spectrum)sc->wind.turbulence; /* same values (wind.h) */
     p->coherence_decay = sc->wind.coherence_decay;
+    if (sc->wind.height > 0) p->height = sc->wind.height;          /* else the default 10 m */
+    p->length_scale = sc->wind.length_scale;                       /* 0: the spectrum's own */
     p->points = GAL_WINDFIELD_POINTS;
     p->spacing = sc->span.length / (GAL_WINDFIELD_POINTS - 1);
     p->time_step = GAL_WINDFIELD_TIME_STEP;

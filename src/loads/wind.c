@@ -59,10 +59,10 @@ int gal_wind_params_check(const gal_wind_params *p)
     if (!(p->intensity >= 0 && p->intensity <= 1))
         return gal_error(GAL_EINPUT, "wind: intensity = %g: allowed range [0, 1]", p->intensity);
     if (p->spectrum != GAL_WIND_KAIMAL && p->spectrum != GAL_WIND_DAVENPORT &&
-        p->spectrum != GAL_WIND_VON_KARMAN)
+        p->spectrum != GAL_WIND_VON_KARMAN && p->spectrum != GAL_WIND_EN1991)
         return gal_error(GAL_EINPUT, "wind: spectrum = %d: allowed kaimal (%d), davenport (%d), "
-                         "von_karman (%d)", (int)p->spectrum, GAL_WIND_KAIMAL, GAL_WIND_DAVENPORT,
-                         GAL_WIND_VON_KARMAN);
+                         "von_karman (%d), en1991 (%d)", (int)p->spectrum, GAL_WIND_KAIMAL,
+                         GAL_WIND_DAVENPORT, GAL_WIND_VON_KARMAN, GAL_WIND_EN1991);
     if (!(isfinite(p->height) && p->height > 0))
         return gal_error(GAL_EINPUT, "wind: height = %g m: must be finite and > 0", p->height);
     if (!(isfinite(p->length_scale) && p->length_scale >= 0))
@@ -96,6 +96,7 @@ double gal_wind_length_scale(const gal_wind_params *p)
     case GAL_WIND_KAIMAL: return 8.1 * Lambda;
     case GAL_WIND_VON_KARMAN: return 3.5 * Lambda;
     case GAL_WIND_DAVENPORT: return 1200.0;
+    case GAL_WIND_EN1991: return 300.0 * pow(fmin(p->height, 200.0) / 200.0, 0.52); /* Eq. B.1, II */
     }
     return 0.0;
 }
@@ -112,6 +113,8 @@ double gal_wind_psd(const gal_wind_params *p, double f)
         return sig2 * (2.0 / 3.0) * (L / U) * n / pow(1.0 + n * n, 4.0 / 3.0);
     case GAL_WIND_VON_KARMAN: /* f S / sigma^2 = 4 n / (1 + 70.8 n^2)^(5/6) */
         return sig2 * 4.0 * L / U / pow(1.0 + 70.8 * n * n, 5.0 / 6.0);
+    case GAL_WIND_EN1991:     /* f S / sigma^2 = 6.8 n / (1 + 10.2 n)^(5/3) (EN 1991-1-4 B.2) */
+        return sig2 * 6.8 * L / U / pow(1.0 + 10.2 * n, 5.0 / 3.0);
     }
     return 0.0;
 }

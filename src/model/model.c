@@ -3,6 +3,7 @@
 #include "gallop/model/model.h"
 #include "gallop/base/core.h"
 #include "gallop/loads/windfield.h"
+#include "gallop/model/stringing.h"
 #include "gallop/model/tables.h"
 
 #include <math.h>
@@ -36,11 +37,8 @@ static int rod_params(const gal_scene *sc, gal_model_rod *r)
         p->ecc = sc->ice.eccentricity;
         p->ecc_angle = GAL_PI - sc->ice.attack_angle;
     }
-    switch (sc->span.spec) {
-    case GAL_SPEC_TENSION: r->spec = GAL_BY_TENSION, r->spec_value = sc->span.horizontal_tension; break;
-    case GAL_SPEC_SAG: r->spec = GAL_BY_SAG, r->spec_value = sc->span.sag; break;
-    default: r->spec = GAL_BY_LENGTH, r->spec_value = sc->span.unstretched_length; break;
-    }
+    int st = gal_stringing_spec(sc, p->gravity, &r->spec, &r->spec_value); /* tension, sag or length */
+    if (st != GAL_OK) return st;
     p->unstretched_length = r->spec == GAL_BY_LENGTH ? r->spec_value : 0.0;
     return GAL_OK;
 }

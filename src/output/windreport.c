@@ -7,7 +7,7 @@
 
 #include <math.h>
 
-static const char *const spectrum_names[] = {"none", "kaimal", "davenport", "von_karman"};
+static const char *const spectrum_names[] = {"none", "kaimal", "davenport", "von_karman", "en1991"};
 
 static int write_csv(gal_outset *o, const gal_wind *w, double U, const int *pt, int np)
 {

@@ -14,16 +14,23 @@
 
 static const char *const csv_cols[] = {
     "name", "diameter_m", "mass_per_length_kg_m", "axial_stiffness_n", "bending_stiffness_n_m2",
-    "torsional_stiffness_n_m2_rad", "polar_inertia_kg_m2_m", "source"};
-static const int csv_keys[7] = {-1, K_DIAM, K_MASS, K_EA, K_EI, K_GJ, K_CPOLAR};
+    "torsional_stiffness_n_m2_rad", "polar_inertia_kg_m2_m", "rated_strength_n",
+    "thermal_expansion_1_k", "final_modulus_pa", "source"};
+#define NCOL 11  /* columns; the source is the rest of the line */
+#define NCOL_OLD 8 /* the table before rated strength, expansion and modulus: still read */
+#define NNUM 10  /* columns 1..9 are numbers */
+static const int csv_keys[NNUM] = {-1, K_DIAM, K_MASS, K_EA, K_EI, K_GJ, K_CPOLAR,
+                                   K_CRTS, K_CALPHA, K_CMOD};
+#define FIRST_OPTIONAL 7 /* rated strength, expansion, modulus: empty where not published */
 
 /* Where the reading of the table is. */
 typedef struct {
     const char *csv;   /* its path */
     int line;          /* the line read last */
     int header;        /* the header was read */
+    int ncol;          /* its columns: NCOL, or NCOL_OLD (no optional columns) */
     int found;         /* line of the row asked for, 0 none yet */
-    double row[7];     /* that row's numbers (row[0] unused) */
+    double row[NNUM];  /* that row's numbers (row[0] unused; 0: an empty optional column) */
     char list[512];    /* the names seen, for the message when the name is not found */
     size_t listn;
 } ctab;
@@ -45,18 +52,20 @@ static int csv_fail(pstate *ps, const ctab *t, int line, const char *fmt, ...)
     return scn_fail(ps, GAL_EINPUT, line, "%s", what);
 }
 
-/* One data row: 8 fields, numbers in the range of their scene keys; the row asked for is kept. */
+/* One data row: 11 fields, numbers in the range of their scene keys (the optional ones may be
+ * empty); the row asked for is kept. */
 static int table_row(pstate *ps, ctab *t, char **f, int nf)
 {
     gal_scene *sc = ps->sc;
     char sn[128], sf[128], rt[160];
     scn_show(f[0], sn, sizeof sn);
-    if (nf != 8 || !*f[0])
-        return csv_fail(ps, t, t->line, "row %s: %d fields; allowed: 8 fields, the first a "
-                        "non-empty name", sn, nf);
-    double v[7] = {0};
-    for (int i = 1; i < 7; i++) {
+    if (nf != t->ncol || !*f[0])
+        return csv_fail(ps, t, t->line, "row %s: %d fields; allowed: %d fields, the first a "
+                        "non-empty name", sn, nf, t->ncol);
+    double v[NNUM] = {0};
+    for (int i = 1; i < NNUM; i++) {
         int k = csv_keys[i];
+        if (i >= FIRST_OPTIONAL && (t->ncol == NCOL_OLD || !*f[i])) continue; /* not published */
         int isnum = scn_parse_num(f[i], &v[i]);
         if (!isnum || !scn_in_range(&scn_keys[k], v[i]))
             return csv_fail(ps, t, t->line, "row %s: %s = %s: %s; allowed: %s", sn, csv_cols[i],
@@ -89,24 +98,31 @@ static int table_lines(pstate *ps, ctab *t, char *buf, size_t len)
         t->line++;
         char *s = scn_trim(l);
         if (!*s || *s == '#') continue;
-        /* split into 8 fields: the 7 first commas, the source is the rest */
-        char *f[8];
+        /* split into NCOL fields: the first NCOL - 1 commas, the source is the rest */
+        char *f[NCOL];
         int nf = 0;
         f[nf++] = s;
-        for (char *p = s; *p && nf < 8; p++)
+        int maxf = t->header ? t->ncol : NCOL;
+        for (char *p = s; *p && nf < maxf; p++)
             if (*p == ',') *p = '\0', f[nf++] = p + 1;
         for (int i = 0; i < nf; i++) f[i] = scn_trim(f[i]);
         if (t->header) {
             if (!table_row(ps, t, f, nf)) return 0;
             continue;
         }
-        int ok = nf == 8;
-        for (int i = 0; ok && i < 8; i++) ok = !strcmp(f[i], csv_cols[i]);
+        /* the header: all columns, or the old 8 (name ... polar_inertia_kg_m2_m, source) */
+        int ok = nf == NCOL;
+        for (int i = 0; ok && i < NCOL; i++) ok = !strcmp(f[i], csv_cols[i]);
+        int old = nf == NCOL_OLD && !strcmp(f[NCOL_OLD - 1], "source");
+        for (int i = 0; old && i < NCOL_OLD - 1; i++) old = !strcmp(f[i], csv_cols[i]);
+        t->ncol = old ? NCOL_OLD : NCOL;
+        ok = ok || old;
         if (!ok)
             return csv_fail(ps, t, t->line, "not the conductor table header; allowed: name,"
                             "diameter_m,mass_per_length_kg_m,axial_stiffness_n,"
                             "bending_stiffness_n_m2,torsional_stiffness_n_m2_rad,"
-                            "polar_inertia_kg_m2_m,source");
+                            "polar_inertia_kg_m2_m,rated_strength_n,thermal_expansion_1_k,"
+                            "final_modulus_pa,source");
         t->header = 1;
     }
     return 1;
@@ -138,7 +154,7 @@ int scn_load_conductor(pstate *ps, const char *csv)
     if (!t.found)
         return scn_fail(ps, GAL_EINPUT, nl, "[conductor] name = %s: not in %s; allowed: %s", sv,
                         sc_, t.listn ? t.list : "(the table has no rows)");
-    for (int i = 1; i < 7; i++) {
+    for (int i = 1; i < NNUM; i++) {
         int k = csv_keys[i];
         if (!ps->given[k]) *(double *)((char *)sc + scn_keys[k].off) = t.row[i];
     }

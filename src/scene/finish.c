@@ -30,13 +30,7 @@ static const char *fx_missing(const gal_scene *sc, int fx)
     }
 }
 
-/* An error about key k as it was given (file line or --set): "[section] key = value: ...". */
-static int kfail(pstate *ps, int k, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
-static int kfail(pstate *ps, int k, const char *fmt, ...)
+int scn_kfail(pstate *ps, int k, const char *fmt, ...)
 {
     char what[2048], sv[128];
     va_list ap;
@@ -47,35 +41,83 @@ static int kfail(pstate *ps, int k, const char *fmt, ...)
                     scn_key_name(k), scn_show(ps->raw[k], sv, sizeof sv), what);
 }
 
-/* Exactly one of horizontal_tension, sag, unstretched_length: the span's specification. */
+/* "[section] key" of a key, for messages that name several */
+const char *scn_sec_key(int k, char *buf, size_t n)
+{
+    snprintf(buf, n, "[%s] %s", scn_keys[k].sec, scn_key_name(k));
+    return buf;
+}
+
+#define SPEC_ALLOWED "exactly one of [span] horizontal_tension, sag, unstretched_length, " \
+                     "tension_rts, or a [stringing] horizontal_tension or sag"
+
+/* Exactly one way of fixing the equilibrium: [span] horizontal_tension, sag, unstretched_length,
+ * tension_rts, or a [stringing] condition (its horizontal_tension or its sag). */
 static int span_spec(pstate *ps)
 {
-    int nspec = !!ps->given[K_TENSION] + !!ps->given[K_SAG] + !!ps->given[K_ULENGTH];
-    if (nspec == 0)
-        return scn_fail(ps, GAL_EINPUT, 0, "[span] horizontal_tension / sag / unstretched_length: "
-                        "none given; allowed: exactly one of them");
-    if (nspec > 1) {
-        int last = -1;
-        char list[256] = "";
-        size_t used = 0;
-        for (int k = K_TENSION; k <= K_ULENGTH; k++) {
-            if (!ps->given[k]) continue;
-            char where[32];
-            if (ps->given[k] > 0) snprintf(where, sizeof where, "line %d", ps->given[k]);
-            else snprintf(where, sizeof where, "--set");
-            int w = snprintf(list + used, sizeof list - used, "%s%s (%s)", used ? " and " : "",
-                             scn_key_name(k), where);
-            if (w > 0 && (size_t)w < sizeof list - used) used += (size_t)w;
-            /* report at the one given last: a --set, else the highest line */
-            if (last < 0 || (ps->given[last] > 0 && (ps->given[k] < 0 || ps->given[k] > ps->given[last])))
-                last = k;
-        }
-        return kfail(ps, last, "%s given; allowed: exactly one of horizontal_tension, sag, "
-                     "unstretched_length", list);
+    static const int keys[] = {K_TENSION, K_SAG, K_ULENGTH, K_RTSFRAC, K_STENSION, K_SSAG};
+    int nspec = 0, last = -1;
+    char list[512] = "", kb[64];
+    size_t used = 0;
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
+        int k = keys[i];
+        if (!ps->given[k]) continue;
+        nspec++;
+        char where[32];
+        if (ps->given[k] > 0) snprintf(where, sizeof where, "line %d", ps->given[k]);
+        else snprintf(where, sizeof where, "--set");
+        int w = snprintf(list + used, sizeof list - used, "%s%s (%s)", used ? " and " : "",
+                         k == K_STENSION || k == K_SSAG ? scn_sec_key(k, kb, sizeof kb)
+                                                        : scn_key_name(k), where);
+        if (w > 0 && (size_t)w < sizeof list - used) used += (size_t)w;
+        /* report at the one given last: a --set, else the highest line */
+        if (last < 0 || (ps->given[last] > 0 && (ps->given[k] < 0 || ps->given[k] > ps->given[last])))
+            last = k;
     }
-    ps->sc->span.spec = ps->given[K_TENSION] ? GAL_SPEC_TENSION
-                        : ps->given[K_SAG]   ? GAL_SPEC_SAG
-                                             : GAL_SPEC_LENGTH;
+    if (nspec == 0)
+        return scn_fail(ps, GAL_EINPUT, 0, "[span] horizontal_tension / sag / unstretched_length / "
+                        "tension_rts / [stringing]: none given; allowed: " SPEC_ALLOWED);
+    if (nspec > 1) return scn_kfail(ps, last, "%s given; allowed: " SPEC_ALLOWED, list);
+    gal_scene *sc = ps->sc;
+    sc->span.spec = ps->given[K_TENSION]   ? GAL_SPEC_TENSION
+                    : ps->given[K_SAG]     ? GAL_SPEC_SAG
+                    : ps->given[K_ULENGTH] ? GAL_SPEC_LENGTH
+                    : ps->given[K_RTSFRAC] ? GAL_SPEC_TENSION_RTS
+                                           : GAL_SPEC_STRINGING;
+    sc->stringing.present = sc->span.spec == GAL_SPEC_STRINGING;
+    sc->stringing.by_sag = ps->given[K_SSAG] != 0;
+    return 1;
+}
+
+/* The stringing condition and the load case's temperature; tension_rts needs a rated strength.
+ * Run after the conductor row is read. */
+static int stringing_checks(pstate *ps)
+{
+    gal_scene *sc = ps->sc;
+    char kb[64];
+    if (sc->span.spec == GAL_SPEC_TENSION_RTS && !(sc->conductor.rated_strength > 0))
+        return scn_kfail(ps, K_RTSFRAC, "the conductor has no rated strength; allowed: give "
+                     "[conductor] rated_strength, or a conductor row that has one");
+    if (sc->span.spec == GAL_SPEC_TENSION_RTS)
+        sc->span.horizontal_tension = sc->span.tension_rts * sc->conductor.rated_strength;
+    if (!sc->stringing.present) {
+        if (ps->given[K_STEMP] && !ps->over[K_STENSION])
+            return scn_kfail(ps, K_STEMP, "a stringing temperature without a stringing condition; "
+                         "allowed: together with [stringing] horizontal_tension or sag");
+        if (!ps->given[K_TEMP]) sc->span.temperature = 0;
+        return 1;
+    }
+    int k = sc->stringing.by_sag ? K_SSAG : K_STENSION;
+    if (!ps->given[K_STEMP])
+        return scn_kfail(ps, k, "no stringing temperature; allowed: together with %s",
+                     scn_sec_key(K_STEMP, kb, sizeof kb));
+    if (sc->stringing.by_sag && !(sc->stringing.sag < sc->span.length / 2))
+        return scn_kfail(ps, K_SSAG, "too deep; allowed: 0 < sag < length / 2 (%g m)",
+                     sc->span.length / 2);
+    if (!ps->given[K_TEMP]) sc->span.temperature = sc->stringing.temperature;
+    if (sc->span.temperature != sc->stringing.temperature && !(sc->conductor.thermal_expansion > 0))
+        return scn_kfail(ps, K_TEMP, "the conductor has no thermal expansion coefficient; allowed: "
+                     "give [conductor] thermal_expansion, or the stringing temperature");
     return 1;
 }
 
@@ -106,36 +148,25 @@ static int span_checks(pstate *ps)
     double L = sc->span.length, h = sc->span.height_difference;
     double chord = sqrt(L * L + h * h);
     if (ps->given[K_HDIFF] && !(fabs(h) < L))
-        return kfail(ps, K_HDIFF, "steeper than 45 degrees; allowed: |height_difference| < length "
+        return scn_kfail(ps, K_HDIFF, "steeper than 45 degrees; allowed: |height_difference| < length "
                      "(%g m)", L);
     if (sc->span.spec == GAL_SPEC_SAG && !(sc->span.sag < L / 2))
-        return kfail(ps, K_SAG, "too deep; allowed: 0 < sag < length / 2 (%g m)", L / 2);
+        return scn_kfail(ps, K_SAG, "too deep; allowed: 0 < sag < length / 2 (%g m)", L / 2);
     if (sc->span.spec == GAL_SPEC_LENGTH &&
         !(sc->span.unstretched_length > chord && sc->span.unstretched_length <= 2 * chord))
-        return kfail(ps, K_ULENGTH, "out of range; allowed: chord < unstretched_length <= 2 chord, "
+        return scn_kfail(ps, K_ULENGTH, "out of range; allowed: chord < unstretched_length <= 2 chord, "
                      "chord = sqrt(length^2 + height_difference^2) = %.6g m", chord);
     return 1;
 }
 
-/* Conductor and ice defaults; ice keys need an ice mass. */
+/* Conductor and ice defaults (the ice: standards.c). */
 static int conductor_and_ice(pstate *ps)
 {
     gal_scene *sc = ps->sc;
     if (!ps->given[K_CPOLAR] && !ps->given[K_CNAME]) /* a table row has its own */
         sc->conductor.polar_inertia =
             sc->conductor.mass_per_length * sc->conductor.diameter * sc->conductor.diameter / 8;
-    sc->ice.present = ps->given[K_IMASS] != 0;
-    if (!sc->ice.present) {
-        for (int k = K_IECC; k <= K_IANGLE; k++)
-            if (ps->given[k])
-                return kfail(ps, k, "ice without a mass; allowed: together with [ice] "
-                             "mass_per_length");
-    } else if (!ps->given[K_IPOLAR]) {
-        /* the ice mass at the eccentricity plus a thin ring on the conductor surface */
-        double r = sc->conductor.diameter / 2, e = sc->ice.eccentricity;
-        sc->ice.polar_inertia = sc->ice.mass_per_length * (r * r + e * e);
-    }
-    return 1;
+    return scn_ice(ps);
 }
 
 /* Wind and simulation checks, the output directory, the effects: on where the scene has the
@@ -144,16 +175,16 @@ static int wind_and_effects(pstate *ps)
 {
     gal_scene *sc = ps->sc;
     if (sc->wind.turbulence != GAL_TURB_NONE && !(sc->wind.speed > 0))
-        return kfail(ps, K_TURB, "turbulence needs a mean wind; allowed: none, or [wind] speed > 0");
+        return scn_kfail(ps, K_TURB, "turbulence needs a mean wind; allowed: none, or [wind] speed > 0");
     if (sc->simulation.time_step > sc->simulation.duration)
-        return kfail(ps, K_DT, "longer than the duration; allowed: 0 <= time_step <= duration "
+        return scn_kfail(ps, K_DT, "longer than the duration; allowed: 0 <= time_step <= duration "
                      "(%g s)", sc->simulation.duration);
     if (!sc->output.directory[0])
         snprintf(sc->output.directory, sizeof sc->output.directory, "out/%s", sc->name);
     for (int i = 0; i < GAL_FX_COUNT; i++) {
         const char *miss = fx_missing(sc, i);
         if (ps->fx[i] == 1 && miss)
-            return kfail(ps, K_FX0 + i, "the scene lacks its data: %s; allowed: off, or give the "
+            return scn_kfail(ps, K_FX0 + i, "the scene lacks its data: %s; allowed: off, or give the "
                          "data", miss);
         sc->effect[i] = ps->fx[i] >= 0 ? ps->fx[i] : !miss;
     }
@@ -167,5 +198,6 @@ int scn_finish(pstate *ps, const char *csv_given)
         scn_conductor_table(ps, csv_given, csv, sizeof csv);
         if (!scn_load_conductor(ps, csv)) return 0;
     }
-    return required_keys(ps) && span_checks(ps) && conductor_and_ice(ps) && wind_and_effects(ps);
+    return required_keys(ps) && span_checks(ps) && stringing_checks(ps) && conductor_and_ice(ps) &&
+           scn_wind_profile(ps) && wind_and_effects(ps);
 }

@@ -12,9 +12,12 @@ const char *const gal_effect_names[GAL_FX_COUNT] = {
 
 const char *const scn_twist_names[] = {"clamped", "free", NULL};
 const char *const scn_start_names[] = {"rest", "mean_wind", NULL};
-const char *const scn_turb_names[] = {"none", "kaimal", "davenport", "von_karman", NULL};
-static const char *const sections[] = {"span", "conductor", "ice", "wind", "effects",
-                                       "model", "simulation", "output", NULL};
+const char *const scn_turb_names[] = {"none", "kaimal", "davenport", "von_karman", "en1991",
+                                      NULL};
+const char *const scn_terrain_names[] = {"0", "I", "II", "III", "IV", NULL};
+const char *const scn_onoff_names[] = {"off", "on", NULL};
+static const char *const sections[] = {"span", "stringing", "conductor", "ice", "wind",
+                                       "effects", "model", "simulation", "output", NULL};
 
 #define OFF(m) offsetof(gal_scene, m)
 #define NUM(s, k, m, lo, lop, hi, hip, u) {s, k, T_NUM, OFF(m), lo, hi, lop, hip, 1.0, u, NULL}
@@ -28,6 +31,16 @@ const keydef scn_keys[K_COUNT] = {
     NUM("span", "sag", span.sag, 0, 1, 2500, 1, "m"),
     NUM("span", "unstretched_length", span.unstretched_length, 0, 1, 10000, 0, "m"),
     {"span", "end_twist", T_ENUM, 0, 0, 0, 0, 0, 1.0, "clamped | free", scn_twist_names},
+    NUM("span", "tension_rts", span.tension_rts, 0, 1, 1, 1,
+        "-, horizontal tension over the rated strength, in the load case"),
+    NUM("span", "temperature", span.temperature, -273.15, 1, 1000, 0,
+        "deg C, conductor temperature of the load case"),
+    NUM("stringing", "temperature", stringing.temperature, -273.15, 1, 1000, 0,
+        "deg C, reference temperature of the stringing condition"),
+    NUM("stringing", "horizontal_tension", stringing.horizontal_tension, 0, 1, 5e6, 0,
+        "N, bare conductor at the stringing temperature"),
+    NUM("stringing", "sag", stringing.sag, 0, 1, 2500, 1,
+        "m, mid-span below the chord, bare conductor at the stringing temperature"),
     {"conductor", "name", T_NAME, 0, 0, 0, 0, 0, 1.0, "a row of conductors.csv", NULL},
     NUM("conductor", "diameter", conductor.diameter, 0, 1, 0.2, 0, "m"),
     NUM("conductor", "mass_per_length", conductor.mass_per_length, 0, 1, 100, 0, "kg/m"),
@@ -36,20 +49,43 @@ const keydef scn_keys[K_COUNT] = {
     NUM("conductor", "torsional_stiffness", conductor.torsional_stiffness, 0, 1, 1e6, 0, "N m^2/rad"),
     NUM("conductor", "polar_inertia", conductor.polar_inertia, 0, 1, 10, 0, "kg m^2/m"),
     NUM("conductor", "damping_ratio", conductor.damping_ratio, 0, 0, 1, 1, "-"),
+    NUM("conductor", "rated_strength", conductor.rated_strength, 0, 1, 1e7, 0,
+        "N, rated tensile strength (RTS)"),
+    NUM("conductor", "thermal_expansion", conductor.thermal_expansion, 0, 1, 1e-4, 0,
+        "1/K, coefficient of linear expansion"),
+    NUM("conductor", "final_modulus", conductor.final_modulus, 0, 1, 1e12, 0,
+        "Pa, final modulus (informational: the rod uses axial_stiffness)"),
     NUM("ice", "mass_per_length", ice.mass_per_length, 0, 1, 100, 0, "kg/m"),
     NUM("ice", "eccentricity", ice.eccentricity, -0.5, 0, 0.5, 0, "m"),
     NUM("ice", "polar_inertia", ice.polar_inertia, 0, 0, 10, 0, "kg m^2/m"),
     {"ice", "aero_table", T_PATH, 0, 0, 0, 0, 0, 1.0, "CSV alpha_deg,cd,cl,cm", NULL},
     {"ice", "attack_angle", T_NUM, OFF(ice.attack_angle), -180, 180, 0, 0, DEG,
      "deg, angle of attack of a horizontal wind normal to the span on the section at rest", NULL},
+    NUM("ice", "thickness", ice.thickness, 0, 1, 0.5, 0,
+        "m, radial thickness of an equivalent uniform ice sleeve"),
+    NUM("ice", "density", ice.density, 0, 1, 1000, 0, "kg/m^3, of the ice (glaze 900)"),
+    {"ice", "shape", T_NAME, 0, 0, 0, 0, 0, 1.0, "a table of data/aero (file name without .csv)",
+     NULL},
     NUM("wind", "speed", wind.speed, 0, 0, 80, 0, "m/s"),
     {"wind", "yaw", T_NUM, OFF(wind.yaw), 0, 180, 0, 0, DEG, "deg, 90 = normal to the span", NULL},
     NUM("wind", "air_density", wind.air_density, 0, 1, 5, 0, "kg/m^3"),
-    {"wind", "turbulence", T_ENUM, 0, 0, 0, 0, 0, 1.0, "none | kaimal | davenport | von_karman",
+    {"wind", "turbulence", T_ENUM, 0, 0, 0, 0, 0, 1.0, "none | kaimal | davenport | von_karman | en1991",
      scn_turb_names},
     NUM("wind", "intensity", wind.intensity, 0, 0, 1, 0, "-, sigma_u / U"),
     NUM("wind", "coherence_decay", wind.coherence_decay, 0, 1, 100, 0, "-, C in exp(-C f dx / U)"),
     {"wind", "seed", T_LONG, OFF(wind.seed), 0, 4294967295.0, 0, 0, 1.0, "integer", NULL},
+    NUM("wind", "height", wind.height, 0, 1, 200, 0, "m, conductor height above ground"),
+    {"wind", "terrain", T_ENUM, OFF(wind.terrain), 0, 0, 0, 0, 1.0,
+     "0 | I | II | III | IV (EN 1991-1-4 Table 4.1)", scn_terrain_names},
+    NUM("wind", "roughness_length", wind.roughness_length, 0, 1, 10, 0, "m, z0"),
+    NUM("wind", "basic_speed", wind.basic_speed, 0, 1, 80, 0,
+        "m/s, v_b: 10 min mean at 10 m in terrain II"),
+    NUM("wind", "length_scale", wind.length_scale, 0, 1, 10000, 0,
+        "m, turbulence length scale of the spectrum"),
+    {"wind", "vertical_turbulence", T_ENUM, OFF(wind.vertical_turbulence), 0, 0, 0, 0, 1.0,
+     "off | on", scn_onoff_names},
+    NUM("wind", "vertical_coherence_decay", wind.vertical_coherence_decay, 0, 1, 100, 0,
+        "-, C_w in exp(-C_w f dx / U) of the vertical component"),
     FX(0), FX(1), FX(2), FX(3), FX(4), FX(5), FX(6), FX(7), FX(8), FX(9), FX(10),
     INT("model", "elements", model.elements, 4, 200000),
     INT("model", "modes_vertical", model.modes_vertical, 0, 200),
@@ -111,7 +147,12 @@ const char *scn_key_list(const char *sec, char *buf, size_t n)
 
 const char *scn_section_list(void)
 {
-    return "span, conductor, ice, wind, effects, model, simulation, output";
+    return "span, stringing, conductor, ice, wind, effects, model, simulation, output";
 }
 
-int scn_is_spec(int k) { return k == K_TENSION || k == K_SAG || k == K_ULENGTH; }
+/* the keys that fix the equilibrium: exactly one of them (the stringing section counts once) */
+int scn_is_spec(int k)
+{
+    return k == K_TENSION || k == K_SAG || k == K_ULENGTH || k == K_RTSFRAC || k == K_STENSION ||
+           k == K_SSAG;
+}

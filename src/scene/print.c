@@ -44,11 +44,27 @@ static void print_span_conductor_ice(const gal_scene *sc, FILE *fp)
     fprintf(fp, "\n[span]\n");
     put_key(fp, sc, K_LENGTH);
     put_key(fp, sc, K_HDIFF);
-    put_key(fp, sc, sc->span.spec == GAL_SPEC_TENSION ? K_TENSION
-                    : sc->span.spec == GAL_SPEC_SAG   ? K_SAG
-                                                      : K_ULENGTH);
+    if (sc->span.spec == GAL_SPEC_STRINGING)
+        fprintf(fp, "; the equilibrium: the [stringing] condition below, carried to temperature\n");
+    else
+        put_key(fp, sc, sc->span.spec == GAL_SPEC_TENSION       ? K_TENSION
+                        : sc->span.spec == GAL_SPEC_SAG         ? K_SAG
+                        : sc->span.spec == GAL_SPEC_TENSION_RTS ? K_RTSFRAC
+                                                                : K_ULENGTH);
+    if (sc->span.spec == GAL_SPEC_TENSION_RTS)
+        fprintf(fp, "; horizontal_tension = tension_rts * rated_strength = %.6g N\n",
+                sc->span.horizontal_tension);
+    put_key(fp, sc, K_TEMP);
     fprintf(fp, "end_twist = %s ; clamped | free\n",
             sc->span.end_twist == GAL_TWIST_FREE ? "free" : "clamped");
+
+    fprintf(fp, "\n[stringing]\n");
+    if (sc->stringing.present) {
+        put_key(fp, sc, K_STEMP);
+        put_key(fp, sc, sc->stringing.by_sag ? K_SSAG : K_STENSION);
+    } else {
+        fprintf(fp, "; no stringing condition\n");
+    }
 
     fprintf(fp, "\n[conductor]\n");
     if (sc->conductor.name[0]) {
@@ -56,11 +72,25 @@ static void print_span_conductor_ice(const gal_scene *sc, FILE *fp)
         fprintf(fp, "name = %s\n", sc->conductor.name);
     }
     for (int k = K_DIAM; k <= K_ZETA; k++) put_key(fp, sc, k);
+    for (int k = K_CRTS; k <= K_CMOD; k++) /* 0: not known, not printed (0 is out of range) */
+        if (*(const double *)((const char *)sc + scn_keys[k].off) > 0) put_key(fp, sc, k);
 
     fprintf(fp, "\n[ice]\n");
     if (sc->ice.present) {
-        for (int k = K_IMASS; k <= K_IPOLAR; k++) put_key(fp, sc, k);
-        if (sc->ice.aero_table[0]) {
+        if (sc->ice.thickness > 0) {
+            put_key(fp, sc, K_ITHICK);
+            put_key(fp, sc, K_IDENS);
+            fprintf(fp, "; mass_per_length = %.6g kg/m, iced diameter = %.6g m (from the thickness)\n",
+                    sc->ice.mass_per_length, sc->ice.diameter);
+        } else {
+            put_key(fp, sc, K_IMASS);
+        }
+        put_key(fp, sc, K_IECC);
+        put_key(fp, sc, K_IPOLAR);
+        if (sc->ice.shape[0]) {
+            fprintf(fp, "; a table of data/aero: %s\n", sc->ice.aero_table);
+            fprintf(fp, "shape = %s\n", sc->ice.shape);
+        } else if (sc->ice.aero_table[0]) {
             fprintf(fp, "; CSV alpha_deg,cd,cl,cm\n");
             fprintf(fp, "aero_table = %s\n", sc->ice.aero_table);
         }
@@ -70,17 +100,38 @@ static void print_span_conductor_ice(const gal_scene *sc, FILE *fp)
     }
 }
 
+/* height, terrain, basic speed (the mean speed then a comment), length scale, vertical component */
+static void print_wind_standards(const gal_scene *sc, FILE *fp)
+{
+    if (sc->wind.height > 0) put_key(fp, sc, K_HEIGHT);
+    int t = sc->wind.terrain;
+    if (t >= GAL_TERRAIN_0 && t <= GAL_TERRAIN_IV) {
+        fprintf(fp, "terrain = %s ; %s\n", scn_terrain_names[t], scn_keys[K_TERRAIN].unit);
+        fprintf(fp, "; z0 = %g m, z_min = %g m (EN 1991-1-4 Table 4.1)\n",
+                sc->wind.roughness_length, sc->wind.min_height);
+    } else if (sc->wind.roughness_length > 0) {
+        put_key(fp, sc, K_Z0);
+    }
+    if (sc->wind.basic_speed > 0) put_key(fp, sc, K_VB);
+    if (sc->wind.length_scale > 0) put_key(fp, sc, K_LSCALE);
+    fprintf(fp, "vertical_turbulence = %s ; off | on (on: not generated yet)\n", sc->wind.vertical_turbulence ? "on" : "off");
+}
+
 static void print_wind_effects(const gal_scene *sc, FILE *fp)
 {
     fprintf(fp, "\n[wind]\n");
-    put_key(fp, sc, K_SPEED);
+    if (sc->wind.basic_speed > 0) /* the mean speed follows from it */
+        fprintf(fp, "; speed = %.6g m/s: v_m = c_r(height) basic_speed\n", sc->wind.speed);
+    else
+        put_key(fp, sc, K_SPEED);
     put_key(fp, sc, K_YAW); /* degrees that read back to the same radians */
     put_key(fp, sc, K_RHO);
     int t = sc->wind.turbulence;
-    fprintf(fp, "turbulence = %s ; %s\n", scn_turb_names[t >= 0 && t <= 3 ? t : 0], scn_keys[K_TURB].unit);
+    fprintf(fp, "turbulence = %s ; %s\n", scn_turb_names[t >= 0 && t <= 4 ? t : 0], scn_keys[K_TURB].unit);
     put_key(fp, sc, K_INTENS);
     put_key(fp, sc, K_COH);
     fprintf(fp, "seed = %ld ; integer\n", sc->wind.seed);
+    print_wind_standards(sc, fp);
 
     fprintf(fp, "\n[effects]\n");
     for (int i = 0; i < GAL_FX_COUNT; i++)

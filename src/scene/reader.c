@@ -163,6 +163,8 @@ static void defaults(gal_scene *sc)
     sc->wind.intensity = 0.1;
     sc->wind.coherence_decay = 10;
     sc->wind.seed = 1;
+    sc->wind.terrain = GAL_TERRAIN_NONE;
+    sc->ice.density = 900; /* glaze */
     sc->model.elements = 100;
     sc->model.modes_vertical = 3;
     sc->model.modes_horizontal = 2;
@@ -268,7 +270,9 @@ static void parse(pstate *ps, const char *const *overrides, int n, const char *c
         int k = overrides[i] ? override_key(overrides[i]) : -1;
         if (k < 0) continue;
         ps->over[k] = 1;
-        if (scn_is_spec(k)) ps->over[K_TENSION] = ps->over[K_SAG] = ps->over[K_ULENGTH] = 1;
+        if (scn_is_spec(k))
+            for (int j = 0; j < K_COUNT; j++)
+                if (scn_is_spec(j)) ps->over[j] = 1;
     }
     int r = ini_parse_stream(reader, ps, handler, ps);
     if (r == -2) scn_fail(ps, GAL_ENOMEM, 0, "out of memory");

@@ -17,10 +17,12 @@
 enum { T_NUM, T_INT, T_LONG, T_ENUM, T_NAME, T_PATH, T_DIR, T_FX, T_PROBES };
 
 enum {
-    K_LENGTH, K_HDIFF, K_TENSION, K_SAG, K_ULENGTH, K_TWIST,
-    K_CNAME, K_DIAM, K_MASS, K_EA, K_EI, K_GJ, K_CPOLAR, K_ZETA,
-    K_IMASS, K_IECC, K_IPOLAR, K_ITABLE, K_IANGLE,
+    K_LENGTH, K_HDIFF, K_TENSION, K_SAG, K_ULENGTH, K_TWIST, K_RTSFRAC, K_TEMP,
+    K_STEMP, K_STENSION, K_SSAG,
+    K_CNAME, K_DIAM, K_MASS, K_EA, K_EI, K_GJ, K_CPOLAR, K_ZETA, K_CRTS, K_CALPHA, K_CMOD,
+    K_IMASS, K_IECC, K_IPOLAR, K_ITABLE, K_IANGLE, K_ITHICK, K_IDENS, K_ISHAPE,
     K_SPEED, K_YAW, K_RHO, K_TURB, K_INTENS, K_COH, K_SEED,
+    K_HEIGHT, K_TERRAIN, K_Z0, K_VB, K_LSCALE, K_VTURB, K_VCOH,
     K_FX0, K_FXLAST = K_FX0 + GAL_FX_COUNT - 1,
     K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW,
     K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL, K_START,
@@ -42,6 +44,8 @@ extern const keydef scn_keys[K_COUNT];
 extern const char *const scn_twist_names[];
 extern const char *const scn_start_names[];
 extern const char *const scn_turb_names[];
+extern const char *const scn_terrain_names[];
+extern const char *const scn_onoff_names[];
 
 const char *scn_key_name(int k);
 int scn_find_section(const char *s);
@@ -112,5 +116,20 @@ void scn_conductor_table(const pstate *ps, const char *given, char *out, size_t 
 
 /* The table row, required keys, cross-checks, defaults, effects. 1 done, 0 failed. */
 int scn_finish(pstate *ps, const char *csv_given);
+/* An error about key k as it was given (file line or --set): "[section] key = value: ...". */
+int scn_kfail(pstate *ps, int k, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+/* "[section] key" */
+const char *scn_sec_key(int k, char *buf, size_t n);
+
+/* ---- the standards' inputs (standards.c) ---- */
+
+/* Ice from a mass or from a thickness and density; a shape names a shipped table. */
+int scn_ice(pstate *ps);
+/* Wind from height and terrain (EN 1991-1-4): speed, intensity, length scale where not given. */
+int scn_wind_profile(pstate *ps);
 
 #endif

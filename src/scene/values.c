@@ -162,10 +162,13 @@ static int apply_enum(kv *a)
     if (!kd->names[i]) return bad(a, GAL_EINPUT, "unknown value; allowed: %s", kd->unit);
     if (a->k == K_TWIST) sc->span.end_twist = i ? GAL_TWIST_FREE : GAL_TWIST_CLAMPED;
     else if (a->k == K_START) sc->simulation.start_mean_wind = i;
+    else if (a->k == K_TERRAIN) sc->wind.terrain = (gal_terrain)i;
+    else if (a->k == K_VTURB) sc->wind.vertical_turbulence = i;
     else
         sc->wind.turbulence = i == 1 ? GAL_TURB_KAIMAL
                               : i == 2 ? GAL_TURB_DAVENPORT
                               : i == 3 ? GAL_TURB_VON_KARMAN
+                              : i == 4 ? GAL_TURB_EN1991
                                        : GAL_TURB_NONE;
     return 1;
 }
@@ -175,6 +178,13 @@ static int apply_text(kv *a)
 {
     gal_scene *sc = a->ps->sc;
     const char *v = a->v;
+    if (a->k == K_ISHAPE) {
+        if (!scn_text_ok(v) || strpbrk(v, ",/") || strlen(v) >= sizeof sc->ice.shape)
+            return bad(a, GAL_EINPUT, "not a table name; allowed: 1 to %zu printable characters "
+                       "without ',', '/' or ';'", sizeof sc->ice.shape - 1);
+        strcpy(sc->ice.shape, v);
+        return 1;
+    }
     if (scn_keys[a->k].type == T_NAME) {
         if (!scn_text_ok(v) || strchr(v, ',') || strlen(v) >= sizeof sc->conductor.name)
             return bad(a, GAL_EINPUT, "not a conductor name; allowed: 1 to %zu printable "

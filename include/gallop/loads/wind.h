@@ -16,6 +16,10 @@
  * von Karman (1948), along-wind:
  *     f S(f) / sigma^2 = 4 n / (1 + 70.8 n^2)^(5/6),    n = f L / U,
  *     L = 3.5 Lambda, Lambda = 0.7 min(z, 60 m)  (IEC 61400-1 ed. 2; z = 10 m: L = 24.5 m).
+ * EN 1991-1-4 Annex B (Eq. B.2), the spectrum EN 50341-1 takes for conductors:
+ *     f S(f) / sigma^2 = 6.8 n / (1 + 10.2 n)^(5/3),    n = f L / U,
+ *     L = 300 m (z / 200 m)^0.52 (Eq. B.1 for terrain II, z0 = 0.05 m; a scene with a terrain
+ *     gives its own L through length_scale: gallop/scene/terrain.h).
  * A length_scale > 0 in the parameters replaces the default L.
  *
  * ---- Coherence between two points dx apart (Davenport): coh(f) = exp(-C f dx / U) ----
@@ -46,7 +50,8 @@ extern "C" {
 typedef enum {
     GAL_WIND_KAIMAL = 1,
     GAL_WIND_DAVENPORT = 2,
-    GAL_WIND_VON_KARMAN = 3
+    GAL_WIND_VON_KARMAN = 3,
+    GAL_WIND_EN1991 = 4
 } gal_wind_spectrum;
 
 typedef struct gal_wind_params {

@@ -12,13 +12,23 @@ extern "C" {
 #define GAL_PATH_MAX 1024
 #define GAL_MAX_PROBES 16
 
-/* How the equilibrium is specified: exactly one of these in [span]. */
-typedef enum { GAL_SPEC_TENSION, GAL_SPEC_SAG, GAL_SPEC_LENGTH } gal_span_spec;
+/* How the equilibrium is specified: exactly one of these ([span] horizontal_tension, sag,
+ * unstretched_length, tension_rts, or a [stringing] condition). TENSION_RTS and STRINGING are
+ * turned into TENSION or LENGTH by gal_stringing_spec (gallop/model/stringing.h). */
+typedef enum {
+    GAL_SPEC_TENSION, GAL_SPEC_SAG, GAL_SPEC_LENGTH, GAL_SPEC_TENSION_RTS, GAL_SPEC_STRINGING
+} gal_span_spec;
+
+/* EN 1991-1-4 Table 4.1 terrain categories; GAL_TERRAIN_NONE: no terrain given. */
+typedef enum {
+    GAL_TERRAIN_NONE = -1, GAL_TERRAIN_0, GAL_TERRAIN_I, GAL_TERRAIN_II, GAL_TERRAIN_III,
+    GAL_TERRAIN_IV
+} gal_terrain;
 
 typedef enum { GAL_TWIST_CLAMPED, GAL_TWIST_FREE } gal_end_twist;
 
 typedef enum {
-    GAL_TURB_NONE, GAL_TURB_KAIMAL, GAL_TURB_DAVENPORT, GAL_TURB_VON_KARMAN
+    GAL_TURB_NONE, GAL_TURB_KAIMAL, GAL_TURB_DAVENPORT, GAL_TURB_VON_KARMAN, GAL_TURB_EN1991
 } gal_turbulence;
 
 /* Physical effects that a scene switches on or off ([effects]). */
@@ -39,8 +49,20 @@ typedef struct gal_scene {
         double horizontal_tension;/* N (spec TENSION) */
         double sag;               /* m, mid-span below the chord (spec SAG) */
         double unstretched_length;/* m (spec LENGTH) */
+        double tension_rts;       /* -, horizontal tension over conductor.rated_strength, in the
+                                   * load case (spec TENSION_RTS) */
+        double temperature;       /* deg C, conductor temperature of the load case (used by a
+                                   * [stringing] condition); default: the stringing temperature */
         gal_end_twist end_twist;
     } span;
+
+    struct {                      /* the sag-tension change of state's reference ([stringing]) */
+        int present;              /* a stringing condition was given (spec STRINGING) */
+        int by_sag;               /* 0: horizontal_tension given, 1: sag given */
+        double temperature;       /* deg C, reference (stringing) temperature */
+        double horizontal_tension;/* N, bare conductor at that temperature */
+        double sag;               /* m, mid-span below the chord, bare, at that temperature */
+    } stringing;
 
     struct {
         char name[128];           /* row of data/conductors.csv, or "" */
@@ -51,10 +73,20 @@ typedef struct gal_scene {
         double torsional_stiffness; /* N m^2/rad (GJ) */
         double polar_inertia;     /* kg m^2/m (I_theta); default: the table row, else m d^2/8 */
         double damping_ratio;     /* -, modal, all modes */
+        double rated_strength;    /* N, rated tensile strength (RTS); 0 = unknown */
+        double thermal_expansion; /* 1/K, coefficient of linear expansion; 0 = unknown */
+        double final_modulus;     /* Pa, final modulus of the stranded conductor (table; the
+                                   * rod uses axial_stiffness); 0 = unknown */
     } conductor;
 
     struct {
-        int present;              /* an [ice] section with a mass was given */
+        int present;              /* an [ice] section with a mass or a thickness was given */
+        double thickness;         /* m, radial thickness of an equivalent uniform ice sleeve;
+                                   * 0 = not given (the mass is given) */
+        double density;           /* kg/m^3, of that ice (glaze 900 by default) */
+        double diameter;          /* m, iced diameter: conductor.diameter + 2 thickness (0 when
+                                   * the ice is given by its mass) */
+        char shape[64];           /* the shipped table named by ice.shape, or "" */
         double mass_per_length;   /* kg/m */
         double eccentricity;      /* m, offset of the ice mass centre from the axis */
         double polar_inertia;     /* kg m^2/m, about the conductor axis; default
@@ -77,6 +109,15 @@ typedef struct gal_scene {
         double intensity;         /* -, turbulence intensity sigma_u / U */
         double coherence_decay;   /* -, C in exp(-C f dx / U) */
         long seed;
+        /* the standards' wind (EN 1991-1-4 as used by EN 50341-1): */
+        double height;            /* m, conductor height above ground; 0 = not given (10 m) */
+        gal_terrain terrain;      /* roughness category, or GAL_TERRAIN_NONE */
+        double roughness_length;  /* m, z0 (the terrain's, or given); 0 = none */
+        double min_height;        /* m, z_min of the terrain (z0 given: 1 m) */
+        double basic_speed;       /* m/s, v_b (10 m, category II, 10 min); 0 = not given */
+        double length_scale;      /* m, turbulence length scale; 0 = the spectrum's default */
+        int vertical_turbulence;  /* 1: a vertical component w is generated as well */
+        double vertical_coherence_decay; /* -, C_w in exp(-C_w f dx / U); default C of u */
     } wind;
 
     int effect[GAL_FX_COUNT];     /* 1 on, 0 off */
