@@ -28,6 +28,27 @@ static void print_run(const char *label, const gal_sim_result *r, const gal_sim_
            m->peak_to_peak[0], m->peak_to_peak[3], m->time_to_steady_s);
 }
 
+/* A reduced run that finished past its residual tolerance (model.on_invalid = warn) says so. */
+static void warn_invalid(const char *cmd, const gal_scene *sc, const gal_sim_result *r)
+{
+    if (r->checked && !r->valid)
+        fprintf(stderr, "gallop %s: warning: the reduced model's residual reached %.3g, past model.residual_tolerance "
+                "= %.3g: its results are not checked (summary.json: valid: false)\n", cmd, r->residual_max,
+                sc->model.residual_tolerance);
+}
+
+/* The full model's results alone, when the reduced model of `compare` failed; exit 1. */
+static int compare_full_only(const char *outdir, const gal_scene *sc, const gal_sim_result *full)
+{
+    char why[1024];
+    snprintf(why, sizeof why, "%s", gal_error_message());
+    int st = gal_sim_write(outdir, sc, full);
+    if (st) return fail("compare", st);
+    fprintf(stderr, "gallop compare: the reduced model failed: %s\ngallop compare: the full model's results are "
+            "written alone: %s/{trace.csv,summary.json}\n", why, outdir);
+    return 1;
+}
+
 /* The scene's model and its data forwarded to the start of a run. */
 static int setup(const gal_scene *sc, gal_model **m, gal_data **d)
 {
@@ -45,7 +66,7 @@ int gal_cli_simulate(int argc, char **argv)
     static const char *const opts[] = {"--model", NULL};
     int rc = gal_cli_load_scene_opts(argc, argv, &sc, &outdir, opts, vals);
     if (rc) return rc;
-    const gal_integrator_type *T = &gal_integrator_reduced;
+    const gal_integrator_type *T = NULL; /* NULL: the scene's reduced model */
     if (vals[0]) {
         if (!strcmp(vals[0], "full")) T = &gal_integrator_full;
         else if (strcmp(vals[0], "reduced")) {
@@ -60,6 +81,7 @@ int gal_cli_simulate(int argc, char **argv)
     gal_sim_result r;
     memset(&r, 0, sizeof r);
     int st = setup(&sc, &m, &d);
+    if (!st && !T) T = gal_integrator_reduced_of(m);
     if (!st) st = gal_run(m, d, T, &o, &r);
     gal_sim_measures ms;
     if (!st) st = gal_sim_measure(&r, gal_sim_mid_probe(&r), -1, &ms);
@@ -67,6 +89,7 @@ int gal_cli_simulate(int argc, char **argv)
     if (!st) {
         print_run(T->name, &r, &ms);
         printf("files: %s/{trace.csv,summary.json}\n", outdir);
+        warn_invalid("simulate", &sc, &r);
     }
     gal_sim_result_clear(&r);
     gal_data_free(d);
@@ -89,7 +112,11 @@ int gal_cli_compare(int argc, char **argv)
     memset(&red, 0, sizeof red);
     int st = setup(&sc, &m, &d);
     if (!st) st = gal_run(m, d, &gal_integrator_full, &o, &full);
-    if (!st) st = gal_run(m, d, &gal_integrator_reduced, &o, &red);
+    int red_failed = 0;
+    if (!st && (red_failed = gal_run(m, d, gal_integrator_reduced_of(m), &o, &red)) != GAL_OK) {
+        rc = compare_full_only(outdir, &sc, &full);
+        st = -1;
+    }
     gal_compare_figures c;
     if (!st) st = gal_sim_write_compare(outdir, &sc, &full, &red, &c);
     if (!st) {
@@ -102,10 +129,12 @@ int gal_cli_compare(int argc, char **argv)
                "speedup %.1fx (reduced identification %.3f s)\n", 100 * c.frequency_error, 100 * c.err_vertical,
                100 * c.err_horizontal, 100 * c.err_twist, c.speedup, red.build_time_s);
         printf("files: %s/{compare.csv,summary.json}\n", outdir);
+        warn_invalid("compare", &sc, &red);
     }
     gal_sim_result_clear(&full);
     gal_sim_result_clear(&red);
     gal_data_free(d);
     gal_model_free(m);
+    if (red_failed) return rc;
     return st ? fail("compare", st) : 0;
 }

@@ -70,6 +70,12 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     gal_json_kv_int(j, "basis_modes", r->basis);
     gal_json_kv_int(j, "identification_load_cases", r->load_cases);
     gal_json_obj_end(j);
+    if (r->checked) {
+        /* the recomputed reduced model's self-check */
+        gal_json_kv_num(j, "residual_max", r->residual_max);
+        gal_json_key(j, "valid");
+        gal_json_bool(j, r->valid);
+    }
 }
 
 static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *r)

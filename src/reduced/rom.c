@@ -251,3 +251,28 @@ double gal_rom_energy(gal_rom *m)
     for (int k = 0; k < m->r; k++) T += 0.5 * m->v[k] * m->v[k];
     return T + U;
 }
+
+void gal_rom_observe(const gal_rom *m, int nprobe, const double *probe, double *row, double tension[2])
+{
+    const gal_rod *rod = m->rod;
+    int nel = rod->p.elements, nn = rod->nn;
+    for (int k = 0; k < nprobe; k++) {
+        double s = probe[k] * nel, se = s - 0.5;
+        int e = (int)s < nel - 1 ? (int)s : nel - 1, e0 = (int)floor(se);
+        double xi = s - e, w1 = se - e0;
+        if (e0 < 0) e0 = 0, w1 = 0;
+        if (e0 >= nel - 1) e0 = nel - 1, w1 = 0;
+        int e1 = e0 + 1 < nel ? e0 + 1 : e0;
+        double d[3];
+        for (int c = 0; c < 3; c++)
+            d[c] = (1 - xi) * (gal_rom_entry(m, 3 * e + c, 0) - m->q_eq[3 * e + c]) +
+                   xi * (gal_rom_entry(m, 3 * (e + 1) + c, 0) - m->q_eq[3 * (e + 1) + c]);
+        double th = 0;
+        if (rod->p.torsion)
+            th = (1 - w1) * (gal_rom_entry(m, 3 * nn + e0, 0) - m->q_eq[3 * nn + e0]) +
+                 w1 * (gal_rom_entry(m, 3 * nn + e1, 0) - m->q_eq[3 * nn + e1]);
+        row[4 * k] = d[1], row[4 * k + 1] = d[2], row[4 * k + 2] = d[0], row[4 * k + 3] = th * 180 / GAL_PI;
+    }
+    tension[0] = gal_rom_element_tension(m, 0);
+    tension[1] = gal_rom_element_tension(m, nel - 1);
+}

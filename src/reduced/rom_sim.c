@@ -19,28 +19,7 @@ void gal_rom_sim_default_opts(gal_rom_sim_opts *o)
 /* One sample row (horizontal, vertical, along, twist per probe) and the support tensions. */
 static void sample(const gal_rom *m, const gal_sim_result *res, long i)
 {
-    const gal_rod *rod = m->rod;
-    int nel = rod->p.elements, nn = rod->nn;
-    double *row = res->trace + (size_t)i * 4 * res->nprobe;
-    for (int k = 0; k < res->nprobe; k++) {
-        double s = res->probe[k] * nel, se = s - 0.5;
-        int e = (int)s < nel - 1 ? (int)s : nel - 1, e0 = (int)floor(se);
-        double xi = s - e, w1 = se - e0;
-        if (e0 < 0) e0 = 0, w1 = 0;
-        if (e0 >= nel - 1) e0 = nel - 1, w1 = 0;
-        int e1 = e0 + 1 < nel ? e0 + 1 : e0;
-        double d[3];
-        for (int c = 0; c < 3; c++)
-            d[c] = (1 - xi) * (gal_rom_entry(m, 3 * e + c, 0) - m->q_eq[3 * e + c]) +
-                   xi * (gal_rom_entry(m, 3 * (e + 1) + c, 0) - m->q_eq[3 * (e + 1) + c]);
-        double th = 0;
-        if (rod->p.torsion)
-            th = (1 - w1) * (gal_rom_entry(m, 3 * nn + e0, 0) - m->q_eq[3 * nn + e0]) +
-                 w1 * (gal_rom_entry(m, 3 * nn + e1, 0) - m->q_eq[3 * nn + e1]);
-        row[4 * k] = d[1], row[4 * k + 1] = d[2], row[4 * k + 2] = d[0], row[4 * k + 3] = th * 180 / GAL_PI;
-    }
-    res->tension[2 * i] = gal_rom_element_tension(m, 0);
-    res->tension[2 * i + 1] = gal_rom_element_tension(m, nel - 1);
+    gal_rom_observe(m, res->nprobe, res->probe, res->trace + (size_t)i * 4 * res->nprobe, res->tension + 2 * i);
 }
 
 static int run_loop(gal_rom *m, const gal_rom_sim_opts *o, gal_sim_result *res, int sub, gal_rom_sim_info *info)

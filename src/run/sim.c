@@ -99,6 +99,7 @@ int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const
     res->steps = c.steps, res->newton_iterations = c.newton_iterations, res->factorizations = c.factorizations;
     res->force_evaluations = c.force_evaluations, res->rejected_steps = c.rejected_steps;
     res->basis = c.basis, res->load_cases = c.load_cases, res->build_time_s = c.build_time_s;
+    res->checked = c.checked, res->residual_max = c.residual_max, res->valid = c.valid;
     return st;
 }
 
@@ -129,5 +130,6 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
 {
     gal_run_opts o;
     gal_run_opts_from_scene(s->sc, &o);
-    return gal_run(s->model, s->data, kind == GAL_MODEL_FULL ? &gal_integrator_full : &gal_integrator_reduced, &o, res);
+    return gal_run(s->model, s->data, kind == GAL_MODEL_FULL ? &gal_integrator_full : gal_integrator_reduced_of(s->model),
+                   &o, res);
 }

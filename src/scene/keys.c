@@ -12,6 +12,8 @@ const char *const gal_effect_names[GAL_FX_COUNT] = {
 
 const char *const scn_twist_names[] = {"clamped", "free", NULL};
 const char *const scn_start_names[] = {"rest", "mean_wind", NULL};
+const char *const scn_reduced_names[] = {"identified", "recomputed", NULL};
+const char *const scn_on_invalid_names[] = {"stop", "warn", NULL};
 const char *const scn_turb_names[] = {"none", "kaimal", "davenport", "von_karman", "en1991",
                                       NULL};
 const char *const scn_terrain_names[] = {"0", "I", "II", "III", "IV", NULL};
@@ -95,6 +97,14 @@ const keydef scn_keys[K_COUNT] = {
         "m, largest translation of the reduced model's identification; 0 = max(1 m, sag)"),
     {"model", "identification_twist", T_NUM, OFF(model.identification_twist), 0, 90, 1, 0, DEG,
      "deg, largest twist of the reduced model's identification", NULL},
+    {"model", "reduced", T_ENUM, 0, 0, 0, 0, 0, 1.0,
+     "identified | recomputed (identified: the fitted polynomial; recomputed: modes and modal derivatives, "
+     "the rod's own forces at the reconstructed state, self-checked)", scn_reduced_names},
+    NUM("model", "residual_tolerance", model.residual_tolerance, 0, 1, 10, 0,
+        "-, recomputed reduced model: largest relative residual of its self-check (0.1: amplitudes within ~5%)"),
+    {"model", "on_invalid", T_ENUM, 0, 0, 0, 0, 0, 1.0,
+     "stop | warn (what a recomputed reduced run does when its residual passes residual_tolerance)",
+     scn_on_invalid_names},
     NUM("simulation", "duration", simulation.duration, 0, 1, 1e6, 0, "s"),
     NUM("simulation", "time_step", simulation.time_step, 0, 0, 1000, 0, "s, 0 = chosen by gallop"),
     {"simulation", "probes", T_PROBES, 0, 0, 1, 1, 1, 1.0, "fractions of the span, comma list",

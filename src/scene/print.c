@@ -148,6 +148,9 @@ static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
     fprintf(fp, "modes_torsional = %d ; count\n", sc->model.modes_torsional);
     put_key(fp, sc, K_IDAMP);
     put_key(fp, sc, K_IDTW);
+    fprintf(fp, "reduced = %s ; identified | recomputed\n", scn_reduced_names[sc->model.reduced_recomputed ? 1 : 0]);
+    put_key(fp, sc, K_RESTOL);
+    fprintf(fp, "on_invalid = %s ; stop | warn\n", scn_on_invalid_names[sc->model.on_invalid_warn ? 1 : 0]);
 
     fprintf(fp, "\n[simulation]\n");
     put_key(fp, sc, K_DUR);

@@ -178,6 +178,9 @@ static void defaults(gal_scene *sc)
     sc->simulation.tolerance = 1e-6;
     sc->model.identification_amplitude = 0;
     sc->model.identification_twist = 30 * DEG;
+    sc->model.reduced_recomputed = 0;
+    sc->model.residual_tolerance = 0.1;
+    sc->model.on_invalid_warn = 0;
     sc->simulation.nprobes = 1;
     sc->simulation.probes[0] = 0.5;
 }

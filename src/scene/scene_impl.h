@@ -24,7 +24,7 @@ enum {
     K_SPEED, K_YAW, K_RHO, K_TURB, K_INTENS, K_COH, K_SEED,
     K_HEIGHT, K_TERRAIN, K_Z0, K_VB, K_LSCALE, K_VTURB, K_VCOH,
     K_FX0, K_FXLAST = K_FX0 + GAL_FX_COUNT - 1,
-    K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW,
+    K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW, K_REDUCED, K_RESTOL, K_ONINV,
     K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL, K_START,
     K_DIR, K_COUNT
 };
@@ -43,6 +43,8 @@ typedef struct {
 extern const keydef scn_keys[K_COUNT];
 extern const char *const scn_twist_names[];
 extern const char *const scn_start_names[];
+extern const char *const scn_reduced_names[];
+extern const char *const scn_on_invalid_names[];
 extern const char *const scn_turb_names[];
 extern const char *const scn_terrain_names[];
 extern const char *const scn_onoff_names[];

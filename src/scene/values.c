@@ -164,6 +164,8 @@ static int apply_enum(kv *a)
     else if (a->k == K_START) sc->simulation.start_mean_wind = i;
     else if (a->k == K_TERRAIN) sc->wind.terrain = (gal_terrain)i;
     else if (a->k == K_VTURB) sc->wind.vertical_turbulence = i;
+    else if (a->k == K_REDUCED) sc->model.reduced_recomputed = i;
+    else if (a->k == K_ONINV) sc->model.on_invalid_warn = i;
     else
         sc->wind.turbulence = i == 1 ? GAL_TURB_KAIMAL
                               : i == 2 ? GAL_TURB_DAVENPORT

@@ -108,6 +108,10 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
 int gal_rom_internal_force(gal_rom *m, const double *x, double *f);
 /* Kr = V^T K V (r x r) for a tangent K on the rod's pattern; work: ndof. */
 void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, double *work);
+/* At the reconstructed state: per probe (fractions of the span) the displacement from the
+ * equilibrium, horizontal, vertical, along (m) and twist (deg), 4 entries each into row; the
+ * support elements' tensions (N). */
+void gal_rom_observe(const gal_rom *m, int nprobe, const double *probe, double *row, double tension[2]);
 /* Configuration entry qi of the reconstructed state (rate: of its velocity), O(r). */
 double gal_rom_entry(const gal_rom *m, int qi, int rate);
 

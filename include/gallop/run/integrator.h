@@ -4,7 +4,10 @@
  * they did; run/sim.h drives either with one loop.
  *   gal_integrator_full     generalized-alpha on the whole rod (full/dynamics.h), fixed steps
  *   gal_integrator_reduced  the reduced model (reduced/rdyn.h), adaptive steps and Hermite
- *                           interpolation between them */
+ *                           interpolation between them
+ *   gal_integrator_rom      the recomputed reduced model (reduced/rom.h, model.reduced =
+ *                           recomputed): generalized-alpha on modes and modal derivatives, the
+ *                           rod's own forces, its residual checked every second */
 #ifndef GALLOP_INTEGRATOR_H
 #define GALLOP_INTEGRATOR_H
 
@@ -31,7 +34,10 @@ typedef struct gal_run_counters {
     long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
     int basis;               /* reduced: modes in the basis */
     int load_cases;          /* reduced: identification load cases */
-    double build_time_s;     /* reduced: identification */
+    double build_time_s;     /* reduced: identification, or the recomputed model's own set-up */
+    int checked;             /* recomputed reduced model: its self-check ran (then the two below) */
+    double residual_max;     /* the largest relative residual it found */
+    int valid;               /* 1: residual_max within model.residual_tolerance */
 } gal_run_counters;
 
 typedef struct gal_integrator_type {
@@ -53,6 +59,10 @@ typedef struct gal_integrator_type {
 
 extern const gal_integrator_type gal_integrator_full;
 extern const gal_integrator_type gal_integrator_reduced;
+extern const gal_integrator_type gal_integrator_rom;
+
+/* The reduced integrator the model's scene asks for (model.reduced). */
+const gal_integrator_type *gal_integrator_reduced_of(const gal_model *m);
 
 #ifdef __cplusplus
 }

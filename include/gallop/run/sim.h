@@ -28,6 +28,9 @@ typedef struct gal_sim_result {
     long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
     int basis;                     /* reduced: modes in the basis */
     int load_cases;                /* reduced: identification load cases */
+    int checked;                   /* recomputed reduced model: self-checked (residual_max, valid) */
+    double residual_max;
+    int valid;
 } gal_sim_result;
 
 /* The run controls of a scene's [simulation]. */

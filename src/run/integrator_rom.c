@@ -1,0 +1,150 @@
+/* integrator_rom.c: the recomputed reduced model (reduced/rom.h) as a galloping run's integrator
+ * (integrator.h): the basis built from the selected modes (none at or near 0 Hz) and their modal
+ * derivatives about the equilibrium, fixed generalized-alpha steps, the probes and the support
+ * tensions from the reconstructed rod, and the self-check (gal_rom_residual) every second of
+ * simulated time against model.residual_tolerance: past it the run stops (model.on_invalid =
+ * stop) or goes on marked invalid (warn). */
+#include "gallop/run/integrator.h"
+#include "gallop/base/core.h"
+#include "gallop/reduced/rom.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CHECK_INTERVAL 1.0 /* s of simulated time between self-checks */
+#define MODE_FLOOR_HZ 0.01 /* a selected mode below this is a rigid or free-twist motion */
+
+static const char *const family_keys[GAL_FAMILY_COUNT] = {"modes_vertical", "modes_horizontal", "modes_torsional",
+                                                          "modes_vertical"};
+
+typedef struct {
+    gal_rom *rom;
+    const gal_model *m;
+    double next_check, tol;
+    int warn, checks, valid;
+    double residual_max;
+    gal_rom_check worst;
+} rom_state;
+
+const gal_integrator_type *gal_integrator_reduced_of(const gal_model *m)
+{
+    return m->sc.model.reduced_recomputed ? &gal_integrator_rom : &gal_integrator_reduced;
+}
+
+static void rom_free(void *state)
+{
+    rom_state *s = state;
+    if (!s) return;
+    gal_rom_free(s->rom);
+    free(s);
+}
+
+/* The selected modes into sel; a mode at or near 0 Hz is refused, named. */
+static int select_modes(const gal_model *m, const gal_data *d, int *sel, int *r)
+{
+    *r = 0;
+    for (int k = 0; k < d->md.n && *r < GAL_BASIS_MAX; k++) {
+        const gal_mode *mo = &d->md.mode[k];
+        if (!mo->selected) continue;
+        if (!(mo->frequency_hz >= MODE_FLOOR_HZ))
+            return gal_error(GAL_EINPUT, "%s: selected mode %d (%s) is at %.3g Hz, at or near 0 Hz (a rigid or "
+                             "free-twist motion): the recomputed reduced model does not take it; select fewer modes "
+                             "of that family (model.%s) or clamp the twist (span.end_twist)",
+                             m->sc.path, k + 1, gal_family_names[mo->family], mo->frequency_hz, family_keys[mo->family]);
+        sel[(*r)++] = k;
+    }
+    if (!*r) return gal_error(GAL_EINPUT, "%s: no mode selected for the reduced model (model.modes_*)", m->sc.path);
+    return GAL_OK;
+}
+
+static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *o, double dt_out, double fhi,
+                     void **state)
+{
+    *state = NULL;
+    int sel[GAL_BASIS_MAX], r, st;
+    if ((st = select_modes(m, d, sel, &r))) return st;
+    rom_state *s = calloc(1, sizeof *s);
+    if (!s) return gal_error(GAL_ENOMEM, "simulate: out of memory");
+    double h = o->time_step;
+    if (!(h > 0)) h = fmin(dt_out, 1.0 / (40 * fhi));
+    int sub = (int)ceil(dt_out / h - 1e-9);
+    gal_rom_opts ro;
+    gal_rom_default_opts(&ro);
+    ro.h = dt_out / sub;
+    ro.rho_inf = o->rho_inf;
+    ro.rayleigh_mass = d->rayleigh_mass, ro.rayleigh_stiffness = d->rayleigh_stiffness;
+    gal_force F = {0};
+    if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */
+    s->m = m;
+    s->tol = m->sc.model.residual_tolerance;
+    s->warn = m->sc.model.on_invalid_warn;
+    s->valid = 1;
+    s->rom = gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, sel, r, &ro, &F);
+    if (!s->rom) {
+        rom_free(s);
+        return GAL_EFAIL;
+    }
+    if ((st = gal_rom_start(s->rom, 0.0, d->q_start, NULL))) {
+        rom_free(s);
+        return st;
+    }
+    *state = s;
+    return GAL_OK;
+}
+
+/* The self-check at the state reached; GAL_EFAIL naming what grew when it fails and stop is asked. */
+static int self_check(rom_state *s)
+{
+    gal_rom_check chk;
+    int st = gal_rom_residual(s->rom, &chk);
+    if (st) return st;
+    s->checks++;
+    if (chk.max > s->residual_max) s->residual_max = chk.max, s->worst = chk;
+    if (chk.max <= s->tol || !s->valid) return GAL_OK;
+    s->valid = 0;
+    if (s->warn) return GAL_OK;
+    int f = 0;
+    for (int k = 1; k < GAL_FAMILY_COUNT; k++)
+        if (chk.rel[k] > chk.rel[f]) f = k;
+    return gal_error(GAL_EFAIL, "%s: the reduced model's residual grew to %.3g in the %s family at t = %.4g s, past "
+                     "model.residual_tolerance = %.3g (amplitudes no longer within ~5%%): select more modes "
+                     "(model.%s), raise model.residual_tolerance, or set model.on_invalid = warn to finish the run "
+                     "marked invalid", s->m->sc.path, chk.rel[f], gal_family_names[f], s->rom->t, s->tol,
+                     family_keys[f]);
+}
+
+static int rom_advance(void *state, double t_out, double t_end)
+{
+    (void)t_end;
+    rom_state *s = state;
+    int st = gal_rom_advance(s->rom, t_out);
+    if (!st && s->rom->t >= s->next_check - 1e-9) {
+        st = self_check(s);
+        s->next_check += CHECK_INTERVAL;
+    }
+    return st;
+}
+
+static void rom_observe(void *state, double *probes, double tension[2])
+{
+    rom_state *s = state;
+    gal_rom_observe(s->rom, s->m->nprobe, s->m->probe, probes, tension);
+}
+
+static void rom_counters(const void *state, gal_run_counters *c)
+{
+    const rom_state *s = state;
+    const gal_rom *r = s->rom;
+    memset(c, 0, sizeof *c);
+    c->time_step_s = r->o.h;
+    c->steps = r->steps, c->newton_iterations = r->newton_iterations, c->factorizations = r->tangents;
+    c->force_evaluations = r->force_evaluations;
+    c->basis = r->r;
+    c->build_time_s = r->build_time_s;
+    c->checked = s->checks > 0, c->residual_max = s->residual_max, c->valid = s->valid;
+}
+
+const gal_integrator_type gal_integrator_rom = {
+    "reduced", GAL_MODEL_REDUCED, GAL_STAGE_START, rom_alloc, rom_advance, rom_observe, rom_counters, rom_free,
+};
