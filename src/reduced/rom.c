@@ -41,11 +41,11 @@ static void project(const gal_rom *m, const double *g, double *f)
     }
 }
 
-/* Internal force at x (and the reduced tangent into Kr when Kr != NULL). */
+/* Internal force at x, its energy into m->U1 (and the reduced tangent into Kr when Kr != NULL). */
 static int internal(gal_rom *m, const double *x, double *f, double *Kr)
 {
     reconstruct(m, x, NULL);
-    int st = gal_rod_eval(m->rod, m->q, NULL, m->gq, Kr ? m->K : NULL);
+    int st = gal_rod_eval(m->rod, m->q, &m->U1, m->gq, Kr ? m->K : NULL);
     if (st) return st;
     project(m, m->gq, f);
     if (Kr) {
@@ -127,6 +127,7 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
     int st = internal(m, m->x, m->fi, NULL);
     if (!st) st = external(m, t, m->x, m->v, m->fe);
     if (st) return st;
+    m->U = m->U1;
     /* a = fe - fi - Cr v */
     for (int i = 0; i < r; i++) {
         double c = 0;
@@ -145,27 +146,47 @@ static void newmark(gal_rom *m, double h)
     }
 }
 
+/* The discrete gradient of the internal force over the step (Gonzalez 1996) into m->fdg:
+ * fbar = (fi(x0) + fi(x1)) / 2 corrected along dx = x1 - x0 so that fdg . dx = U(x1) - U(x0)
+ * exactly: with the trapezoidal Newmark updates (rho_inf = 1) the step then conserves T + U. */
+static void discrete_gradient(gal_rom *m)
+{
+    int r = m->r;
+    double dd = 0, fd = 0, xs = 0;
+    for (int i = 0; i < r; i++) {
+        double dx = m->x1[i] - m->x[i];
+        m->fdg[i] = 0.5 * (m->fi[i] + m->fi1[i]);
+        dd += dx * dx, fd += m->fdg[i] * dx, xs += m->x1[i] * m->x1[i] + m->x[i] * m->x[i];
+    }
+    if (!(dd > 1e-28 * xs) || !(dd > 0)) return;
+    double c = (m->U1 - m->U - fd) / dd;
+    for (int i = 0; i < r; i++) m->fdg[i] += c * (m->x1[i] - m->x[i]);
+}
+
 /* Residual at the generalized mid-point into m->res; returns its largest entry over the Newton
- * tolerance (converged at <= 1). */
+ * tolerance (converged at <= 1). With rho_inf = 1 the internal force is the discrete gradient. */
 static double residual(gal_rom *m)
 {
     int r = m->r;
     double am = m->am, af = m->af, rn = 0, sc = 0;
+    int dg = m->o.rho_inf == 1.0;
+    if (dg) discrete_gradient(m);
     for (int i = 0; i < r; i++) {
         double c = 0;
         for (int j = 0; j < r; j++) c += m->Cr[i * r + j] * ((1 - af) * m->v1[j] + af * m->v[j]);
-        m->res[i] = (1 - am) * m->a1[i] + am * m->a[i] + c + (1 - af) * (m->fi1[i] - m->fe1[i]) +
-                    af * (m->fi[i] - m->fe[i]);
+        double fi = dg ? m->fdg[i] : (1 - af) * m->fi1[i] + af * m->fi[i];
+        m->res[i] = (1 - am) * m->a1[i] + am * m->a[i] + c + fi - (1 - af) * m->fe1[i] - af * m->fe[i];
         rn = fmax(rn, fabs(m->res[i]));
         sc = fmax(sc, fabs(m->fi1[i]) + fabs(m->fe1[i]));
     }
     return rn / fmax(m->o.newton_tol * fmax(sc, m->fscale), m->ffloor);
 }
 
-int gal_rom_step(gal_rom *m)
+/* Newton on a1 for one step of h from the state; x1, v1, a1, fi1, fe1 hold the result. */
+static int newton(gal_rom *m, double h)
 {
     int r = m->r, st = GAL_OK;
-    double h = m->o.h, af = m->af, t1 = m->t + h;
+    double af = m->af, t1 = m->t + h;
     memcpy(m->a1, m->a, (size_t)r * sizeof(double));
     int it, conv = 0, fresh = 1;
     double prev = INFINITY;
@@ -198,14 +219,37 @@ int gal_rom_step(gal_rom *m)
     if (!st && !conv)
         st = gal_error(GAL_EFAIL, "reduced model: Newton did not converge in %d iterations at t = %.6g s "
                        "(time step %g s)", m->o.max_newton, t1, h);
-    if (st) return gal_error(st, "at t = %.6g s: %s", t1, gal_error_message());
+    return st;
+}
+
+/* A step of h; on failure, two of h/2 (up to GAL_ROM_HALVINGS times deep). The state changes only
+ * on success. */
+static int step(gal_rom *m, double h, int depth)
+{
+    int r = m->r, st = newton(m, h);
+    if (st && st != GAL_ENOMEM && depth < GAL_ROM_HALVINGS) {
+        m->halvings++;
+        st = step(m, 0.5 * h, depth + 1);
+        if (!st) st = step(m, 0.5 * h, depth + 1);
+        return st;
+    }
+    if (st) return st;
     memcpy(m->x, m->x1, (size_t)r * sizeof(double));
     memcpy(m->v, m->v1, (size_t)r * sizeof(double));
     memcpy(m->a, m->a1, (size_t)r * sizeof(double));
     memcpy(m->fi, m->fi1, (size_t)r * sizeof(double));
     memcpy(m->fe, m->fe1, (size_t)r * sizeof(double));
-    m->t = t1;
+    m->U = m->U1;
+    m->t += h;
     m->steps++;
+    return GAL_OK;
+}
+
+int gal_rom_step(gal_rom *m)
+{
+    double t1 = m->t + m->o.h;
+    int st = step(m, m->o.h, 0);
+    if (st) return gal_error(st, "at t = %.6g s (after %d step halvings): %s", t1, GAL_ROM_HALVINGS, gal_error_message());
     return GAL_OK;
 }
 

@@ -32,7 +32,7 @@ gal_rom *gal_rom_free(gal_rom *m)
     gal_chol_free(m->chol0);
     free(m->x); free(m->v); free(m->a); free(m->fi); free(m->fe);
     free(m->q); free(m->vq); free(m->gq); free(m->fq); free(m->wn); free(m->wn2);
-    free(m->x1); free(m->v1); free(m->a1); free(m->fi1); free(m->fe1); free(m->res); free(m->da);
+    free(m->x1); free(m->v1); free(m->a1); free(m->fi1); free(m->fe1); free(m->fdg); free(m->res); free(m->da);
     free(m->J); free(m->Kr); free(m->piv);
     free(m);
     return NULL;
@@ -112,12 +112,12 @@ static int alloc_state(gal_rom *m, int rmax)
     m->wn = malloc((size_t)n * sizeof(double)), m->wn2 = malloc((size_t)n * sizeof(double));
     m->x = calloc(r, sizeof(double)), m->v = calloc(r, sizeof(double)), m->a = calloc(r, sizeof(double));
     m->fi = calloc(r, sizeof(double)), m->fe = calloc(r, sizeof(double));
-    m->x1 = malloc(br), m->v1 = malloc(br), m->a1 = malloc(br), m->fi1 = malloc(br), m->fe1 = malloc(br);
+    m->x1 = malloc(br), m->v1 = malloc(br), m->a1 = malloc(br), m->fi1 = malloc(br), m->fe1 = malloc(br), m->fdg = malloc(br);
     m->res = malloc(br), m->da = malloc(br), m->piv = malloc((size_t)r * sizeof(int));
     m->K0 = gal_csc_clone(m->rod->K), m->K = gal_csc_clone(m->rod->K);
     if (!m->V || !m->Cr || !m->K0r || !m->J || !m->Kr || !m->q_eq || !m->q || !m->vq || !m->gq || !m->fq ||
         !m->wn || !m->wn2 || !m->x || !m->v || !m->a || !m->fi || !m->fe || !m->x1 || !m->v1 || !m->a1 ||
-        !m->fi1 || !m->fe1 || !m->res || !m->da || !m->piv || !m->K0 || !m->K)
+        !m->fi1 || !m->fe1 || !m->fdg || !m->res || !m->da || !m->piv || !m->K0 || !m->K)
         return gal_error(GAL_ENOMEM, "reduced model: out of memory for a basis of %d", r);
     return GAL_OK;
 }

@@ -8,7 +8,9 @@
  *   Cr = V^T (alpha M + beta K0) V   (= alpha I + beta diag(w^2) on the modes: the full damping),
  * so the internal force is conservative by construction (the gradient of U(q(x))) and there is no
  * fitted range. The modal-derivative directions are stiff (axial): integrated implicitly by the
- * generalized-alpha method with Newton on the reduced tangent V^T K(q) V. The model checks itself:
+ * generalized-alpha method with Newton on the reduced tangent V^T K(q) V; with rho_inf = 1 the
+ * internal force over a step is the discrete gradient (Gonzalez 1996) of U, so that T + U is
+ * conserved to Newton's tolerance (undamped, unloaded). The model checks itself:
  * gal_rom_residual rebuilds the full state and evaluates the full equations' residual
  * M a + C v + grad U - F per family in a mass-weighted norm (gal_rom_check).
  * Present limit: grad U and F are evaluated on every element (gal_rod_eval has no subset yet), so
@@ -68,14 +70,16 @@ typedef struct gal_rom {
     double t;
     double *x, *v, *a;      /* r */
     double *fi, *fe;        /* r: internal and external reduced forces at the state */
+    double U, U1;           /* J: the rod's energy at the state, and at the last evaluation */
     /* workspace */
     double *q, *vq, *gq, *fq;   /* nq */
     double *wn, *wn2;           /* ndof */
-    double *x1, *v1, *a1, *fi1, *fe1, *res, *da, *J, *Kr; /* r, r x r */
+    double *x1, *v1, *a1, *fi1, *fe1, *fdg, *res, *da, *J, *Kr; /* r, r x r */
     int *piv;
     gal_csc *K;
     /* counters */
     long steps, newton_iterations, tangents, force_evaluations;
+    long halvings;          /* steps retried as two halves after Newton failed */
     double build_time_s;
 } gal_rom;
 
@@ -91,7 +95,10 @@ gal_rom *gal_rom_free(gal_rom *m);
 /* Start at time t from the full state (q, v) (v may be NULL: at rest), projected on the basis:
  * x = V^T M (q - q_eq). */
 int gal_rom_start(gal_rom *m, double t, const double *q, const double *v);
-/* One step of o.h; GAL_EFAIL with time and reason when Newton fails. */
+#define GAL_ROM_HALVINGS 4 /* a step whose Newton fails is retried as two halves, this deep */
+
+/* One step of o.h (retried in halves, GAL_ROM_HALVINGS deep, when Newton fails or the rod
+ * degenerates); GAL_EFAIL with time and reason when even the smallest fails. */
 int gal_rom_step(gal_rom *m);
 /* Steps until t >= t_target - h/1000. */
 int gal_rom_advance(gal_rom *m, double t_target);
