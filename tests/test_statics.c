@@ -74,6 +74,33 @@ static void test_inclined_by_sag(void) { check_equilibrium(60, GAL_BY_SAG, 20); 
 static void test_inclined_by_length(void) { check_equilibrium(-60, GAL_BY_LENGTH, 20); }
 static void test_cable_no_bending(void) { check_equilibrium(30, GAL_BY_TENSION, 0); }
 
+/* A taut span (issue 14): a 300 m Drake span at 42 kN (30 % of its rated strength) has an
+ * unstretched length shorter than the chord (the elastic stretch exceeds the sag's extra length).
+ * Given that length the rod finds the same H and sag as given the tension, and the catenary agrees. */
+static void test_taut_by_length(void)
+{
+    gal_rod_params p = drake(300, 0, 100);
+    p.EA = 3.73e7;
+    gal_equilibrium et, el;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 42000, NULL, &et) == GAL_OK, "%s", gal_error_message());
+    double L0 = et.unstretched_length;
+    CHECK(L0 < 300 && L0 > 299.8, "L0 %.6f m is not below the chord", L0);
+    CHECK(gal_statics_solve(&p, GAL_BY_LENGTH, L0, NULL, &el) == GAL_OK, "%s", gal_error_message());
+    gal_catenary c = {.L = 300, .h = 0, .w = p.mass * p.gravity, .EA = p.EA};
+    CHECK(gal_catenary_solve(&c, 2, L0) == GAL_OK, "%s", gal_error_message());
+    printf("    (L0 %.6f m: by tension H %.8g N sag %.8g m, by length H %.8g N sag %.8g m, catenary "
+           "%.8g N %.8g m)\n", L0, et.horizontal_tension, et.sag, el.horizontal_tension, el.sag, c.H,
+           gal_catenary_sag(&c));
+    /* the same discrete rod: to the statics tolerance; the continuous catenary: to the rod's
+     * O(h^2) discretization (1.2e-7 on L0, amplified by EA / H on a taut span) */
+    CHECK_REL(el.horizontal_tension, 42000, 1e-7);
+    CHECK_REL(el.sag, et.sag, 1e-7);
+    CHECK_REL(c.H, 42000, 1e-4);
+    CHECK_REL(gal_catenary_sag(&c), el.sag, 1e-4);
+    gal_equilibrium_clear(&et);
+    gal_equilibrium_clear(&el);
+}
+
 /* Without gravity the span is a straight line under the given tension. */
 static void test_no_gravity(void)
 {
@@ -115,6 +142,7 @@ int main(void)
     RUN(test_inclined_by_sag);
     RUN(test_inclined_by_length);
     RUN(test_cable_no_bending);
+    RUN(test_taut_by_length);
     RUN(test_no_gravity);
     RUN(test_eccentric_ice_twist);
     return CHECK_SUMMARY();
