@@ -66,6 +66,12 @@ int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d
         return gal_error(GAL_EFAIL, "the stiffness matrix is not positive definite (pivot %ld of %d)",
                          (long)f->L->minor, f->n);
     if (f->c.status < 0) return gal_error(GAL_EFAIL, "CHOLMOD: factorization failed (status %d)", f->c.status);
+    f->negative_pivots = 0;
+    if (!f->L->is_super && !f->L->is_ll) { /* LDL': D on the diagonal of L's columns */
+        const int *Lp = f->L->p;
+        const double *Lx = f->L->x;
+        for (int j = 0; j < f->n; j++) f->negative_pivots += Lx[Lp[j]] < 0;
+    }
     return GAL_OK;
 }
 
