@@ -1,6 +1,8 @@
 /* chol.h: sparse Cholesky factorization of a symmetric matrix given as its upper triangle in a
  * gal_csc pattern, by CHOLMOD: symbolic analysis once, numeric factorization many times, with an
- * optional diagonal shift (K + s D). */
+ * optional diagonal shift (K + s D). The matrix is handed to CHOLMOD already permuted to its
+ * fill-reducing order (an upper triangle in the natural order is what its simplicial LDL' takes
+ * without a copy: otherwise every factorization transposes it twice). */
 #ifndef GALLOP_CHOL_H
 #define GALLOP_CHOL_H
 
@@ -14,6 +16,8 @@ typedef struct gal_chol {
     cholmod_factor *L;
     cholmod_dense *B, *X, *Y, *E;
     int n;
+    int *perm;             /* n: the fill-reducing order, A's column k is K's column perm[k] */
+    int *map;              /* K->nnz: where each entry of K lands in A = triu(K(perm, perm)) */
     long factorizations;   /* counter */
     long solves;           /* counter */
     int negative_pivots;   /* of the last factorization: the negative entries of D (the number of
