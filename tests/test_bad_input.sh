@@ -112,6 +112,9 @@ refused span_stringing_and_tension "$tmp/span_stringing_and_tension.ini" 19 "hor
 printf '[span]\nlength = 200\n[stringing]\nsag = 5\n[conductor]\nname = Drake\n' >"$tmp/nostringtemp.ini"
 refused stringing_no_temperature "$tmp/nostringtemp.ini" 4 "[stringing] temperature"
 key stringing_temperature_alone stringing "temperature = 15" "stringing condition"
+# a taut span shorter than the chord is accepted down to chord / 1.01; 197 m on the 200 m chord is
+# 1.5 % strain, past a conductor's breaking strain (issue 14)
+refused span_ulength_overstretched "$tmp/base.ini" -1 "breaking strain" --set span.unstretched_length=197
 key span_end_twist_bad      span "end_twist = sometimes"
 key span_unknown_key        span "lenght = 200"
 key span_no_equals          span "length 200" "length"

@@ -4,6 +4,11 @@
 #include "gallop.h"
 #include "gallop/statics/catenary.h"
 #include "gallop/statics/statics.h"
+#include "gallop/modes/modes.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 /* ACSR Drake-like conductor on a 300 m span */
 static gal_rod_params drake(double L, double h, int nel)
@@ -74,6 +79,33 @@ static void test_inclined_by_sag(void) { check_equilibrium(60, GAL_BY_SAG, 20); 
 static void test_inclined_by_length(void) { check_equilibrium(-60, GAL_BY_LENGTH, 20); }
 static void test_cable_no_bending(void) { check_equilibrium(30, GAL_BY_TENSION, 0); }
 
+/* A taut span (issue 14): a 300 m Drake span at 42 kN (30 % of its rated strength) has an
+ * unstretched length shorter than the chord (the elastic stretch exceeds the sag's extra length).
+ * Given that length the rod finds the same H and sag as given the tension, and the catenary agrees. */
+static void test_taut_by_length(void)
+{
+    gal_rod_params p = drake(300, 0, 100);
+    p.EA = 3.73e7;
+    gal_equilibrium et, el;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 42000, NULL, &et) == GAL_OK, "%s", gal_error_message());
+    double L0 = et.unstretched_length;
+    CHECK(L0 < 300 && L0 > 299.8, "L0 %.6f m is not below the chord", L0);
+    CHECK(gal_statics_solve(&p, GAL_BY_LENGTH, L0, NULL, &el) == GAL_OK, "%s", gal_error_message());
+    gal_catenary c = {.L = 300, .h = 0, .w = p.mass * p.gravity, .EA = p.EA};
+    CHECK(gal_catenary_solve(&c, 2, L0) == GAL_OK, "%s", gal_error_message());
+    printf("    (L0 %.6f m: by tension H %.8g N sag %.8g m, by length H %.8g N sag %.8g m, catenary "
+           "%.8g N %.8g m)\n", L0, et.horizontal_tension, et.sag, el.horizontal_tension, el.sag, c.H,
+           gal_catenary_sag(&c));
+    /* the same discrete rod: to the statics tolerance; the continuous catenary: to the rod's
+     * O(h^2) discretization (1.2e-7 on L0, amplified by EA / H on a taut span) */
+    CHECK_REL(el.horizontal_tension, 42000, 1e-7);
+    CHECK_REL(el.sag, et.sag, 1e-7);
+    CHECK_REL(c.H, 42000, 1e-4);
+    CHECK_REL(gal_catenary_sag(&c), el.sag, 1e-4);
+    gal_equilibrium_clear(&et);
+    gal_equilibrium_clear(&el);
+}
+
 /* Without gravity the span is a straight line under the given tension. */
 static void test_no_gravity(void)
 {
@@ -105,6 +137,81 @@ static void test_eccentric_ice_twist(void)
     gal_equilibrium_clear(&eq);
 }
 
+/* theta(L0) of GJ theta'' = -w sin(theta), theta(0) = 0, theta'(0) = p (RK4): the twist of a
+ * string in torsion with the inverted pendulum of eccentric ice on top (U = w cos theta). */
+static double shoot(double p, double k2, double L0, double *mid)
+{
+    int n = 20000;
+    double h = L0 / n, th = 0, dth = p;
+    for (int i = 0; i < n; i++) {
+        double k1a = dth, k1b = -k2 * sin(th);
+        double k2a = dth + 0.5 * h * k1b, k2b = -k2 * sin(th + 0.5 * h * k1a);
+        double k3a = dth + 0.5 * h * k2b, k3b = -k2 * sin(th + 0.5 * h * k2a);
+        double k4a = dth + h * k3b, k4b = -k2 * sin(th + h * k3a);
+        th += h / 6 * (k1a + 2 * k2a + 2 * k3a + k4a);
+        dth += h / 6 * (k1b + 2 * k2b + 2 * k3b + k4b);
+        if (i == n / 2 - 1) *mid = th;
+    }
+    return th;
+}
+
+/* Eccentric ice on top of a Falcon span (issue 14): an inverted pendulum. Weak (4 mm) the span
+ * stays untwisted and stable; strong (20 and 50 mm) the untwisted equilibrium is unstable and
+ * statics finds the twisted one the ice weight turns the span to (the mid-span twist of the
+ * shooting solution of GJ theta'' = -m_i g e sin theta), where every mode has a positive
+ * frequency; at the untwisted, unstable equilibrium the modes report lost stability instead of
+ * a 0 Hz mode. */
+static void check_ice_on_top(double e)
+{
+    gal_rod_params p = {.length = 200, .elements = 80, .EA = 6.88e7, .EI = 74.8, .GJ = 389,
+                        .mass = 3.040 + 0.6, .polar_inertia = 5.851e-4 + 0.6 * (0.0196 * 0.0196 + e * e),
+                        .gravity = 9.80665, .torsion = 1, .twist_clamped = 1, .ecc_mass = 0.6, .ecc = e,
+                        .ecc_angle = GAL_PI / 2}; /* the ice centre straight above the axis */
+    gal_equilibrium eq;
+    int st = gal_statics_solve(&p, GAL_BY_TENSION, 40000, NULL, &eq);
+    CHECK(st == GAL_OK, "e %g: %s", e, gal_error_message());
+    if (st) return;
+    int nn = eq.rod->nn, nel = p.elements;
+    double th = 0.5 * (eq.q[3 * nn + nel / 2 - 1] + eq.q[3 * nn + nel / 2]);
+    double k2 = p.ecc_mass * p.gravity * e / p.GJ, L0 = eq.unstretched_length, want = 0, mid = 0;
+    if (k2 * L0 * L0 > GAL_PI * GAL_PI) { /* unstable untwisted: bisect on theta'(0) */
+        double lo = 1e-6, hi = 4 * sqrt(k2);
+        for (int it = 0; it < 100; it++) {
+            double m = 0.5 * (lo + hi);
+            if (shoot(m, k2, L0, &mid) < 0) lo = m; else hi = m;
+        }
+        shoot(lo, k2, L0, &want);
+    }
+    printf("    (e %g m: twisted %d, mid-span twist %.6g rad, shooting %.6g rad)\n", e, eq.twisted, th, want);
+    CHECK(eq.twisted == (want != 0), "e %g: twisted %d", e, eq.twisted);
+    CHECK_NEAR(fabs(th), want, 2e-3 * fmax(want, 1e-3));
+    gal_modes md;
+    int want_t[GAL_FAMILY_COUNT] = {1, 1, 2, 0};
+    CHECK(gal_modes_find(eq.rod, eq.q, want_t, 200, &md) == GAL_OK, "modes: %s", gal_error_message());
+    for (int k = 0; k < md.n; k++)
+        CHECK(md.mode[k].frequency_hz > 0.2, "e %g: mode %d at %g Hz", e, k + 1, md.mode[k].frequency_hz);
+    gal_modes_clear(&md);
+    if (want != 0) { /* the untwisted equilibrium: lost stability, said so */
+        double *q0 = malloc((size_t)eq.rod->nq * sizeof(double));
+        memcpy(q0, eq.q, (size_t)eq.rod->nq * sizeof(double));
+        for (int j = 0; j < nel; j++) q0[3 * nn + j] = 0;
+        gal_rod_params p0 = eq.rod->p;
+        gal_rod *r0 = gal_rod_alloc(&p0, q0);
+        CHECK(gal_modes_solve(r0, q0, 10, &md) == GAL_EFAIL && strstr(gal_error_message(), "lost stability"),
+              "modes at the untwisted equilibrium: %s", gal_error_message());
+        gal_rod_free(r0);
+        free(q0);
+    }
+    gal_equilibrium_clear(&eq);
+}
+
+static void test_ice_on_top(void)
+{
+    check_ice_on_top(0.004);
+    check_ice_on_top(0.02);
+    check_ice_on_top(0.05);
+}
+
 int main(void)
 {
     RUN(test_catenary_roundtrip);
@@ -115,7 +222,9 @@ int main(void)
     RUN(test_inclined_by_sag);
     RUN(test_inclined_by_length);
     RUN(test_cable_no_bending);
+    RUN(test_taut_by_length);
     RUN(test_no_gravity);
     RUN(test_eccentric_ice_twist);
+    RUN(test_ice_on_top);
     return CHECK_SUMMARY();
 }

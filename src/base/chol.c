@@ -1,6 +1,7 @@
 /* chol.c: CHOLMOD wrapper: analyse once, factorize and solve many times without allocating. */
 #include "base/chol.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 #include "gallop/base/core.h"
@@ -15,9 +16,54 @@ gal_chol *gal_chol_free(gal_chol *f)
         cholmod_free_dense(&f->Y, &f->c);
         cholmod_free_dense(&f->E, &f->c);
         cholmod_finish(&f->c);
+        free(f->perm);
+        free(f->map);
         free(f);
     }
     return NULL;
+}
+
+/* The permuted pattern A = triu(K(perm, perm)) with sorted columns, and map: K's entry k -> A's. */
+static int permuted_pattern(gal_chol *f, const gal_csc *K)
+{
+    int n = K->n, *pinv = malloc((size_t)n * sizeof(int)), *cnt = calloc((size_t)n + 1, sizeof(int));
+    f->A = cholmod_allocate_sparse(n, n, K->nnz, 1, 1, 1, CHOLMOD_REAL, &f->c);
+    f->map = malloc((size_t)K->nnz * sizeof(int));
+    if (!pinv || !cnt || !f->A || !f->map) { free(pinv); free(cnt); return GAL_ENOMEM; }
+    int *Ap = f->A->p, *Ai = f->A->i;
+    for (int k = 0; k < n; k++) pinv[f->perm[k]] = k;
+    for (int j = 0; j < n; j++)
+        for (int p = K->colptr[j]; p < K->colptr[j + 1]; p++) {
+            int a = pinv[K->rowind[p]], b = pinv[j];
+            cnt[(a > b ? a : b) + 1]++;
+        }
+    for (int j = 0; j < n; j++) cnt[j + 1] += cnt[j];
+    memcpy(Ap, cnt, (size_t)(n + 1) * sizeof(int));
+    for (int j = 0; j < n; j++)
+        for (int p = K->colptr[j]; p < K->colptr[j + 1]; p++) {
+            int a = pinv[K->rowind[p]], b = pinv[j], col = a > b ? a : b, row = a > b ? b : a;
+            int s = cnt[col]++;
+            /* insertion into the column kept sorted by row (columns hold a dozen entries) */
+            while (s > Ap[col] && Ai[s - 1] > row) {
+                Ai[s] = Ai[s - 1];
+                s--;
+            }
+            Ai[s] = row;
+        }
+    /* map by search in the sorted columns */
+    for (int j = 0; j < n; j++)
+        for (int p = K->colptr[j]; p < K->colptr[j + 1]; p++) {
+            int a = pinv[K->rowind[p]], b = pinv[j], col = a > b ? a : b, row = a > b ? b : a;
+            int lo = Ap[col], hi = Ap[col + 1] - 1;
+            while (lo < hi) {
+                int m = (lo + hi) / 2;
+                if (Ai[m] < row) lo = m + 1; else hi = m;
+            }
+            f->map[p] = lo;
+        }
+    free(pinv);
+    free(cnt);
+    return GAL_OK;
 }
 
 gal_chol *gal_chol_alloc(const gal_csc *K)
@@ -30,14 +76,29 @@ gal_chol *gal_chol_alloc(const gal_csc *K)
     f->n = K->n;
     f->A = cholmod_allocate_sparse(K->n, K->n, K->nnz, 1, 1, 1, CHOLMOD_REAL, &f->c);
     f->B = cholmod_zeros(K->n, 1, CHOLMOD_REAL, &f->c);
-    if (!f->A || !f->B) {
+    f->perm = malloc((size_t)K->n * sizeof(int));
+    if (!f->A || !f->B || !f->perm) {
         gal_error(GAL_ENOMEM, "CHOLMOD: out of memory for a %d x %d matrix", K->n, K->n);
         return gal_chol_free(f);
     }
-    int *Ap = f->A->p, *Ai = f->A->i;
-    memcpy(Ap, K->colptr, (size_t)(K->n + 1) * sizeof(int));
-    memcpy(Ai, K->rowind, (size_t)K->nnz * sizeof(int));
-    f->L = cholmod_analyze(f->A, &f->c); /* fill-reducing ordering and symbolic factorization */
+    memcpy(f->A->p, K->colptr, (size_t)(K->n + 1) * sizeof(int));
+    memcpy(f->A->i, K->rowind, (size_t)K->nnz * sizeof(int));
+    /* the fill-reducing ordering (CHOLMOD's choice, postordered), then the same analysis of the
+     * permuted matrix in its natural order */
+    f->L = cholmod_analyze(f->A, &f->c);
+    if (f->L && f->c.status >= 0) {
+        memcpy(f->perm, f->L->Perm, (size_t)K->n * sizeof(int));
+        cholmod_free_factor(&f->L, &f->c);
+        cholmod_free_sparse(&f->A, &f->c);
+        if (permuted_pattern(f, K) != GAL_OK) {
+            gal_error(GAL_ENOMEM, "CHOLMOD: out of memory for a %d x %d matrix", K->n, K->n);
+            return gal_chol_free(f);
+        }
+        f->c.nmethods = 1;
+        f->c.method[0].ordering = CHOLMOD_NATURAL;
+        f->c.postorder = 0;
+        f->L = cholmod_analyze(f->A, &f->c);
+    }
     if (f->c.status == CHOLMOD_OUT_OF_MEMORY) {
         gal_error(GAL_ENOMEM, "CHOLMOD: out of memory in the symbolic analysis of a %d x %d matrix "
                   "(%d entries)", K->n, K->n, K->nnz);
@@ -53,9 +114,10 @@ gal_chol *gal_chol_alloc(const gal_csc *K)
 int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d)
 {
     double *Ax = f->A->x;
-    memcpy(Ax, K->val, (size_t)K->nnz * sizeof(double));
+    const int *map = f->map;
+    for (int k = 0; k < K->nnz; k++) Ax[map[k]] = K->val[k];
     if (shift != 0)
-        for (int j = 0; j < K->n; j++) Ax[K->diag[j]] += shift * (d ? d[j] : 1.0);
+        for (int j = 0; j < K->n; j++) Ax[map[K->diag[j]]] += shift * (d ? d[j] : 1.0);
     f->factorizations++;
     int ok = cholmod_factorize(f->A, f->L, &f->c);
     /* out of memory is reported as memory, never as a matrix that is not positive definite (a
@@ -66,17 +128,25 @@ int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d
         return gal_error(GAL_EFAIL, "the stiffness matrix is not positive definite (pivot %ld of %d)",
                          (long)f->L->minor, f->n);
     if (f->c.status < 0) return gal_error(GAL_EFAIL, "CHOLMOD: factorization failed (status %d)", f->c.status);
+    f->negative_pivots = 0;
+    if (!f->L->is_super && !f->L->is_ll) { /* LDL': D on the diagonal of L's columns */
+        const int *Lp = f->L->p;
+        const double *Lx = f->L->x;
+        for (int j = 0; j < f->n; j++) f->negative_pivots += Lx[Lp[j]] < 0;
+    }
     return GAL_OK;
 }
 
 int gal_chol_solve(gal_chol *f, const double *b, double *x)
 {
-    memcpy(f->B->x, b, (size_t)f->n * sizeof(double));
+    double *B = f->B->x;
+    for (int k = 0; k < f->n; k++) B[k] = b[f->perm[k]];
     if (!cholmod_solve2(CHOLMOD_A, f->L, f->B, NULL, &f->X, NULL, &f->Y, &f->E, &f->c))
         return gal_error(f->c.status == CHOLMOD_OUT_OF_MEMORY ? GAL_ENOMEM : GAL_EFAIL,
                          "CHOLMOD: solve failed (%s)", f->c.status == CHOLMOD_OUT_OF_MEMORY
                                                            ? "out of memory" : "numerical failure");
-    memcpy(x, f->X->x, (size_t)f->n * sizeof(double));
+    const double *X = f->X->x;
+    for (int k = 0; k < f->n; k++) x[f->perm[k]] = X[k];
     f->solves++;
     return GAL_OK;
 }

@@ -1,6 +1,8 @@
 /* chol.h: sparse Cholesky factorization of a symmetric matrix given as its upper triangle in a
  * gal_csc pattern, by CHOLMOD: symbolic analysis once, numeric factorization many times, with an
- * optional diagonal shift (K + s D). */
+ * optional diagonal shift (K + s D). The matrix is handed to CHOLMOD already permuted to its
+ * fill-reducing order (an upper triangle in the natural order is what its simplicial LDL' takes
+ * without a copy: otherwise every factorization transposes it twice). */
 #ifndef GALLOP_CHOL_H
 #define GALLOP_CHOL_H
 
@@ -14,15 +16,22 @@ typedef struct gal_chol {
     cholmod_factor *L;
     cholmod_dense *B, *X, *Y, *E;
     int n;
+    int *perm;             /* n: the fill-reducing order, A's column k is K's column perm[k] */
+    int *map;              /* K->nnz: where each entry of K lands in A = triu(K(perm, perm)) */
     long factorizations;   /* counter */
     long solves;           /* counter */
+    int negative_pivots;   /* of the last factorization: the negative entries of D (the number of
+                            * negative eigenvalues, Sylvester's law of inertia) */
 } gal_chol;
 
 gal_chol *gal_chol_alloc(const gal_csc *pattern);
 gal_chol *gal_chol_free(gal_chol *f);
-/* Factor K + shift * diag(d) (d NULL: the identity; shift 0: K alone). GAL_EFAIL when the
- * matrix is not positive definite (the message says at which column); GAL_ENOMEM when CHOLMOD ran
- * out of memory (callers pass that on: it is not a statement about the matrix). */
+/* Factor K + shift * diag(d) (d NULL: the identity; shift 0: K alone). GAL_EFAIL when a pivot
+ * is zero or, in a supernodal LL' factorization, not positive (the message says at which column);
+ * the simplicial LDL' factorization CHOLMOD chooses for a banded rod factors an indefinite matrix:
+ * f->negative_pivots then counts its negative eigenvalues (callers that need a positive definite
+ * matrix check it). GAL_ENOMEM when CHOLMOD ran out of memory (callers pass that on: it is not a
+ * statement about the matrix). */
 int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d);
 /* x = (K + shift D)^-1 b; x and b may be the same array. */
 int gal_chol_solve(gal_chol *f, const double *b, double *x);

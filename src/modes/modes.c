@@ -182,6 +182,10 @@ static int shift_factor(const gal_rod *rod, const double *q, modes_ws *w, gal_mo
     if (gal_chol_factor(w->chol, K, 0, NULL) != GAL_OK)
         return gal_error(GAL_EFAIL, "modes: K - sigma M is not positive definite at sigma = %g: the "
                          "equilibrium has lost stability (%s)", sigma, gal_error_message());
+    if (w->chol->negative_pivots)
+        return gal_error(GAL_EFAIL, "modes: K - sigma M has %d negative eigenvalue%s at sigma = %g: the "
+                         "equilibrium has lost stability", w->chol->negative_pivots,
+                         w->chol->negative_pivots > 1 ? "s" : "", sigma);
     return GAL_OK;
 }
 
@@ -259,6 +263,13 @@ static int extract(const gal_rod *rod, const double *q, modes_ws *w, gal_modes *
         for (int j = 0; j < n; j++) dst[j] = s * phi[j];
         gal_mode *md = out->mode + k;
         double lam = d[ord[k]];
+        /* a negative eigenvalue is lost stability, never a 0 Hz mode; a round-off one (the
+         * neutral rotation of a span free to twist) is 0 */
+        if (lam < -1e-6 * fabs(out->sigma)) {
+            free(ord);
+            return gal_error(GAL_EFAIL, "modes: mode %d has omega^2 = %.3g < 0: the equilibrium has lost "
+                             "stability", k + 1, lam);
+        }
         md->omega = lam > 0 ? sqrt(lam) : 0;
         md->frequency_hz = md->omega / (2 * GAL_PI);
     }

@@ -153,8 +153,9 @@ static int span_checks(pstate *ps)
     if (sc->span.spec == GAL_SPEC_SAG && !(sc->span.sag < L / 2))
         return scn_kfail(ps, K_SAG, "too deep; allowed: 0 < sag < length / 2 (%g m)", L / 2);
     if (sc->span.spec == GAL_SPEC_LENGTH &&
-        !(sc->span.unstretched_length > chord && sc->span.unstretched_length <= 2 * chord))
-        return scn_kfail(ps, K_ULENGTH, "out of range; allowed: chord < unstretched_length <= 2 chord, "
+        !(sc->span.unstretched_length >= chord / 1.01 && sc->span.unstretched_length <= 2 * chord))
+        return scn_kfail(ps, K_ULENGTH, "out of range; allowed: chord / 1.01 <= unstretched_length <= 2 "
+                     "chord (shorter stretches the conductor beyond 1 %%, past its breaking strain), "
                      "chord = sqrt(length^2 + height_difference^2) = %.6g m", chord);
     return 1;
 }

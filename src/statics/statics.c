@@ -6,6 +6,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,6 +50,8 @@ typedef struct {
     gal_chol *chol;
     double *g, *gt, *r, *d, *qt, *mdiag;
     double ftol;
+    int descent;          /* 1: shift every indefinite tangent (a descent direction, towards a
+                           * minimum of the energy); 0: Newton on the tangent as it is */
     const double *fext;   /* configuration-sized dead load, or NULL */
 } newton_ws;
 
@@ -96,7 +99,8 @@ static double inf_norm_free(const gal_rod *rod, const double *g)
     return m;
 }
 
-/* Factor K, with a growing shift K + mu M where it is not positive definite. */
+/* Factor K, with a growing shift K + mu M where it is not positive definite (in descent mode,
+ * also where the factorization succeeds with negative pivots). */
 static int factor_shifted(newton_ws *w, int it)
 {
     const gal_rod *rod = w->rod;
@@ -104,10 +108,13 @@ static int factor_shifted(newton_ws *w, int it)
     double kmax = 0;
     for (int j = 0; j < rod->ndof; j++) kmax = fmax(kmax, w->K->val[w->K->diag[j]] / w->mdiag[j]);
     double mu = 0;
+    int max_tries = w->descent ? 40 : 8;
     for (int tries = 0; ; tries++) {
-        if (gal_chol_factor(w->chol, w->K, mu, w->mdiag) == GAL_OK) return GAL_OK;
-        if (tries >= 8) return gal_error(GAL_EFAIL, "statics: the tangent stiffness stays indefinite at Newton iteration %d", it);
-        mu = mu == 0 ? 1e-8 * kmax : mu * 100;
+        if (gal_chol_factor(w->chol, w->K, mu, w->mdiag) == GAL_OK && !(w->descent && w->chol->negative_pivots))
+            return GAL_OK;
+        if (tries >= max_tries) return gal_error(GAL_EFAIL, "statics: the tangent stiffness stays indefinite at Newton iteration %d", it);
+        /* descent: small factors, the shift just above the most negative curvature */
+        mu = mu == 0 ? (w->descent ? 1e-14 : 1e-8) * kmax : mu * (w->descent ? 4 : 100);
     }
 }
 
@@ -279,6 +286,35 @@ static int check_stable(newton_ws *w, const double *q)
     double shift = (rod->p.torsion && !rod->p.twist_clamped) ? 1e-12 * kmax : 0;
     if (gal_chol_factor(w->chol, w->K, shift, w->mdiag) != GAL_OK)
         return gal_error(GAL_EFAIL, "statics: the equilibrium found is not stable: %s", gal_error_message());
+    if (w->chol->negative_pivots)
+        return gal_error(GAL_EFAIL, "statics: the equilibrium found is not stable: the tangent stiffness has "
+                         "%d negative eigenvalue%s", w->chol->negative_pivots, w->chol->negative_pivots > 1 ? "s" : "");
+    return GAL_OK;
+}
+
+/* Eccentric ice above the axis (an inverted pendulum) can make the untwisted equilibrium unstable:
+ * the ice weight then twists the span until its centre hangs below the axis. From the unstable
+ * equilibrium turned a little (a half sine of twist), Newton in descent mode (every indefinite
+ * tangent shifted) goes down to that twisted equilibrium; it is checked like any other. */
+static int twisted(newton_ws *w, gal_equilibrium *eq, gal_statics_spec spec, double value,
+                   const gal_statics_opts *opts, double *res)
+{
+    const gal_rod *rod = eq->rod;
+    const char *why = gal_error_message();
+    int nel = rod->p.elements, nn = rod->nn, st;
+    if (!(rod->p.ecc_mass > 0 && rod->p.ecc != 0 && rod->p.torsion)) return GAL_EFAIL;
+    char first[256];
+    snprintf(first, sizeof first, "%s", why);
+    for (int j = 0; j < nel; j++) eq->q[3 * nn + j] += 0.1 * sin(GAL_PI * (j + 0.5) / nel);
+    w->descent = 1;
+    st = newton(w, eq->q, 8 * opts->max_newton, &eq->newton_iterations, res);
+    if (!st && spec != GAL_BY_LENGTH) st = solve_length(w, eq, spec, value, opts, res);
+    w->descent = 0;
+    if (!st) st = check_stable(w, eq->q);
+    if (st)
+        return gal_error(GAL_EFAIL, "%s; no stable twisted equilibrium found from it either (%s): the "
+                         "eccentric ice makes the span lose stability", first, gal_error_message());
+    eq->twisted = 1;
     return GAL_OK;
 }
 
@@ -327,7 +363,7 @@ int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double val
     double res = 0;
     st = solve_fixed_length(&w, eq, &opts, qsave, &res);
     if (!st && spec != GAL_BY_LENGTH) st = solve_length(&w, eq, spec, value, &opts, &res);
-    if (!st) st = check_stable(&w, eq->q);
+    if (!st && (st = check_stable(&w, eq->q)) == GAL_EFAIL) st = twisted(&w, eq, spec, value, &opts, &res);
     if (!st) {
         eq->residual = res;
         figures(&w, eq);

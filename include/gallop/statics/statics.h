@@ -32,6 +32,8 @@ typedef struct gal_equilibrium {
     int newton_iterations; /* in all */
     int length_iterations; /* outer iterations on L0 */
     int load_steps;        /* bending-stiffness continuation steps (0: not needed) */
+    int twisted;           /* 1: the untwisted equilibrium was unstable (eccentric ice above the
+                            * axis) and this is the twisted one the ice weight turns the span to */
     long factorizations;
     double wall_time_s;
 } gal_equilibrium;
