@@ -80,6 +80,14 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
     gal_json_kv_str(j, "scene", sc->path);
     gal_json_kv_num(j, "duration_s", r->time[r->nsamples - 1]);
     gal_json_kv_num(j, "output_interval_s", r->dt_out);
+    /* what trace.csv holds (the CSV itself starts with its header line) */
+    gal_json_key(j, "trace_csv");
+    gal_json_obj_begin(j);
+    gal_json_kv_str(j, "model", r->kind == GAL_MODEL_FULL ? "full" : "reduced");
+    gal_json_kv_str(j, "holds", "time_s; per probe p<a> (a: fraction of the span) the displacements from the "
+                    "equilibrium, horizontal (y, downwind), vertical (z, up), along (x), m, and the twist, deg; "
+                    "the support tensions, N");
+    gal_json_obj_end(j);
     int mid = gal_sim_mid_probe(r), st;
     gal_sim_measures mm;
     if ((st = gal_sim_measure(r, mid, -1, &mm))) return st;
@@ -101,8 +109,6 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
 /* the trace of a run, one line per sample */
 static void trace_csv(FILE *fp, const gal_sim_result *res)
 {
-    fprintf(fp, "# %s model; displacements from the equilibrium at the probes (fractions of the span)\n",
-            res->kind == GAL_MODEL_FULL ? "full" : "reduced");
     fprintf(fp, "time_s");
     for (int k = 0; k < res->nprobe; k++) {
         double a = res->probe[k];
