@@ -9,6 +9,7 @@
 #include "gallop/base/core.h"
 #include "gallop/base/vec3.h"
 #include "gallop/base/sparse.h"
+#include "gallop/base/datadir.h"
 /* scene: a scene file read, checked and resolved */
 #include "gallop/scene/scene.h"
 #include "gallop/scene/terrain.h"

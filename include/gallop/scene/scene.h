@@ -157,7 +157,8 @@ extern const char *const gal_effect_names[GAL_FX_COUNT];
  * unstretched_length replaces the file's choice among them; a relative ice.aero_table given by
  * --set is taken from the current directory (from the scene's directory in the file).
  * `conductors_csv` is the table that conductor.name refers to (NULL: $GALLOP_DATA/conductors.csv
- * if GALLOP_DATA is set, else data/conductors.csv if it exists in the current directory, else
+ * if GALLOP_DATA is set, else the installed data directory's (gallop/base/datadir.h) if it has
+ * one, else data/conductors.csv if it exists in the current directory, else
  * conductors.csv in the parent of the scene's directory, since scenes live in data/scenes/).
  * The table is read only when conductor.name is given; the scene's conductor keys override its
  * row. An [ice] aero_table is resolved and must be a readable regular file; its contents are not
