@@ -1,5 +1,6 @@
 /* first_frequencies.c: the first natural frequencies of a span through libgallop: a scene file,
- * its sagged equilibrium, the lowest modes of each family. Build with pkg-config:
+ * the model made from it, the pipeline run up to the modes (equilibrium, then modes), printed.
+ * Build with pkg-config:
  *   cc first_frequencies.c $(pkg-config --cflags --libs gallop) -o first_frequencies */
 #include <stdio.h>
 
@@ -9,30 +10,24 @@ int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "data/scenes/drake_300m.ini";
     gal_scene sc;
-    gal_rod_params p;
-    gal_statics_spec spec;
-    double value;
-    gal_equilibrium eq;
-    gal_modes md;
-    int want[GAL_FAMILY_COUNT] = {2, 2, 1, 0};   /* vertical, horizontal, torsional, axial */
-    if (gal_scene_load(&sc, path, NULL, 0, NULL) || gal_model_rod_params(&sc, &p, &spec, &value)) {
+    int st = gal_scene_load(&sc, path, NULL, 0, NULL);   /* conductor rows from conductors.csv */
+    if (st) {
         fprintf(stderr, "%s\n", gal_error_message());
         return 2;
     }
-    if (gal_statics_solve(&p, spec, value, NULL, &eq)) {
-        fprintf(stderr, "no equilibrium: %s\n", gal_error_message());
-        return 1;
-    }
-    int st = gal_modes_find(eq.rod, eq.q, want, 100, &md);
-    if (st == GAL_OK) {
-        printf("%s: sag %.3f m, horizontal tension %.0f N\n", sc.name, eq.sag, eq.horizontal_tension);
-        for (int k = 0; k < md.n; k++)
-            if (md.mode[k].selected)
-                printf("%-10s %.6f Hz\n", gal_family_names[md.mode[k].family], md.mode[k].frequency_hz);
-        gal_modes_clear(&md);
+    gal_model *m = gal_model_alloc(&sc, &st);            /* immutable: mesh, tables, modes wanted */
+    gal_data *d = m ? gal_data_alloc(m) : NULL;          /* what the stages compute */
+    if (m && !d) st = GAL_ENOMEM;
+    if (!st) st = gal_forward(m, d, GAL_STAGE_MODES);    /* sagged equilibrium, then the modes */
+    if (!st) {
+        printf("%s: sag %.3f m, horizontal tension %.0f N\n", sc.name, d->eq.sag, d->eq.horizontal_tension);
+        for (int k = 0; k < d->md.n; k++)
+            if (d->md.mode[k].selected)
+                printf("%-10s %.6f Hz\n", gal_family_names[d->md.mode[k].family], d->md.mode[k].frequency_hz);
     } else {
-        fprintf(stderr, "modes: %s\n", gal_error_message());
+        fprintf(stderr, "%s: %s\n", path, gal_error_message());
     }
-    gal_equilibrium_clear(&eq);
+    gal_data_free(d);
+    gal_model_free(m);
     return st ? 1 : 0;
 }
