@@ -50,9 +50,11 @@
 #include "gallop/analysis/measure.h"
 #include "gallop/analysis/trace_spectrum.h"
 #include "gallop/analysis/windstats.h"
+#include "gallop/analysis/cigre.h"
 /* output: reports and files */
 #include "gallop/output/report.h"
 #include "gallop/output/simreport.h"
+#include "gallop/output/cigrereport.h"
 #include "gallop/output/json.h"
 #include "gallop/output/ofile.h"
 #include "gallop/output/accreport.h"

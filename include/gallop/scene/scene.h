@@ -11,6 +11,7 @@ extern "C" {
 
 #define GAL_PATH_MAX 1024
 #define GAL_MAX_PROBES 16
+#define GAL_MAX_NEIGHBOURS 8
 
 /* How the equilibrium is specified: exactly one of these ([span] horizontal_tension, sag,
  * unstretched_length, tension_rts, or a [stringing] condition). TENSION_RTS and STRINGING are
@@ -145,6 +146,9 @@ typedef struct gal_scene {
 
     struct {
         char directory[GAL_PATH_MAX]; /* default out/<scene name> */
+        int nneighbours;          /* neighbouring phases (at rest) for the clearances, 0 to 8 */
+        double neighbour[GAL_MAX_NEIGHBOURS][2]; /* m: their offsets y (horizontal, downwind), z
+                                   * (up) from this conductor's equilibrium at the same point */
     } output;
 } gal_scene;
 
