@@ -30,7 +30,7 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 TEST_SH  := $(wildcard tests/test_*.sh)
 
 DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-dev \
-            liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox
+            liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox jq
 STAMP    := build/.deps-ok
 
 .PHONY: all deps demo check bench report clean fuzz mutate install
