@@ -30,10 +30,10 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 TEST_SH  := $(wildcard tests/test_*.sh)
 
 DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-dev \
-            liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox
+            liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox jq
 STAMP    := build/.deps-ok
 
-.PHONY: all deps demo check bench report clean fuzz mutate
+.PHONY: all deps demo check bench report clean fuzz mutate install
 all: $(BUILD)/gallop $(BUILD)/libgallop.a
 
 # ---- Debian packages ----
@@ -67,6 +67,41 @@ $(shell mkdir -p build; [ "$$(cat $(COMMIT_STAMP) 2>/dev/null)" = "$(GAL_COMMIT)
 $(BUILD)/obj/output/record.o: CPPFLAGS += -DGAL_COMMIT='"$(GAL_COMMIT)"'
 $(BUILD)/obj/output/record.o: $(COMMIT_STAMP)
 
+# the data directory an installed gallop searches (src/base/datadir.c): empty in a build tree;
+# `make install` builds in build/install with $(PREFIX)/share/gallop baked in
+GAL_DATADIR ?=
+DATADIR_STAMP := $(BUILD)/.datadir
+$(shell mkdir -p $(BUILD); [ -f $(DATADIR_STAMP) ] && [ "$$(cat $(DATADIR_STAMP))" = "$(GAL_DATADIR)" ] || echo "$(GAL_DATADIR)" > $(DATADIR_STAMP))
+$(BUILD)/obj/base/datadir.o: CPPFLAGS += -DGAL_DATADIR='"$(GAL_DATADIR)"'
+$(BUILD)/obj/base/datadir.o: $(DATADIR_STAMP)
+
+# ---- install: make install PREFIX=... [DESTDIR=...] ----
+PREFIX  ?= /usr/local
+GAL_VERSION := $(shell sed -n 's/^\#define GAL_VERSION "\(.*\)"/\1/p' include/gallop/output/record.h)
+INST    := $(DESTDIR)$(PREFIX)
+INST_BUILD := build/install
+install: | $(STAMP)
+	$(MAKE) --no-print-directory BUILD=$(INST_BUILD) SAN=0 GAL_DATADIR=$(PREFIX)/share/gallop \
+	    $(INST_BUILD)/gallop $(INST_BUILD)/libgallop.a
+	install -d $(INST)/bin $(INST)/lib/pkgconfig $(INST)/include/gallop $(INST)/share/man/man1 \
+	    $(INST)/share/gallop/aero $(INST)/share/gallop/scenes
+	install -m 755 $(INST_BUILD)/gallop $(INST)/bin/gallop
+	install -m 644 $(INST_BUILD)/libgallop.a $(INST)/lib/libgallop.a
+	install -m 644 include/gallop.h $(INST)/include/gallop.h
+	cd include && for d in gallop/*/; do install -d $(INST)/include/$$d && install -m 644 $$d*.h $(INST)/include/$$d; done
+	install -m 644 doc/gallop.1 $(INST)/share/man/man1/gallop.1
+	install -m 644 data/conductors.csv $(INST)/share/gallop/conductors.csv
+	install -m 644 data/aero/*.csv $(INST)/share/gallop/aero/
+	install -m 644 data/scenes/*.ini $(INST)/share/gallop/scenes/
+	sed -e 's|@PREFIX@|$(PREFIX)|; s|@VERSION@|$(GAL_VERSION)|; s|@LIBS@|$(LIBS)|' gallop.pc.in > $(INST)/lib/pkgconfig/gallop.pc
+	@echo "installed gallop $(GAL_VERSION) in $(INST)"
+
+# ---- the library example of the README (examples/first_frequencies.c) ----
+EXAMPLES := $(BUILD)/examples/first_frequencies
+$(BUILD)/examples/%: examples/%.c $(BUILD)/libgallop.a
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) $(CPPFLAGS) $< $(BUILD)/libgallop.a $(LIBS) -o $@
+
 # ---- fuzzing (issue 8): libFuzzer harnesses of the scene and table parsers, built with clang ----
 FUZZ_TIME ?= 60
 FUZZ_CC   ?= clang
@@ -97,8 +132,8 @@ DEMO_SCENE ?= data/scenes/drake_300m.ini
 demo: $(BUILD)/gallop
 	./$(BUILD)/gallop modes $(DEMO_SCENE) -o out/demo
 
-check: $(BUILD)/gallop $(TEST_BIN)
-	@GALLOP=$(abspath $(BUILD)/gallop) CC="$(CC)" GALLOP_CPPFLAGS="$(CPPFLAGS)" \
+check: $(BUILD)/gallop $(TEST_BIN) $(EXAMPLES)
+	@GALLOP=$(abspath $(BUILD)/gallop) GALLOP_EXAMPLES=$(abspath $(BUILD)/examples) CC="$(CC)" GALLOP_CPPFLAGS="$(CPPFLAGS)" \
 	    bash tests/run.sh $(TEST_BIN) $(TEST_SH)
 
 # the suite's power: the mutants of tests/mutate/mutants.txt, each applied to a copy of the sources

@@ -9,6 +9,7 @@
 #include "gallop/base/core.h"
 #include "gallop/base/vec3.h"
 #include "gallop/base/sparse.h"
+#include "gallop/base/datadir.h"
 /* scene: a scene file read, checked and resolved */
 #include "gallop/scene/scene.h"
 #include "gallop/scene/terrain.h"
@@ -49,9 +50,11 @@
 #include "gallop/analysis/measure.h"
 #include "gallop/analysis/trace_spectrum.h"
 #include "gallop/analysis/windstats.h"
+#include "gallop/analysis/cigre.h"
 /* output: reports and files */
 #include "gallop/output/report.h"
 #include "gallop/output/simreport.h"
+#include "gallop/output/cigrereport.h"
 #include "gallop/output/json.h"
 #include "gallop/output/ofile.h"
 #include "gallop/output/accreport.h"

@@ -33,7 +33,6 @@ awk -v L=300 -v H=30000 -v m=1.6 -v n=20 -v dir="$out/modes" 'BEGIN {
                sv * 0.98 + 0.01, sh * 0.98 + 0.01, st * 0.97 + 0.005, sa * 0.98 + 0.005, !sa > f
     }
     f = dir "/shapes.csv"
-    print "# mass-normalized shapes of the selected modes (phi^T M phi = 1): m/sqrt(kg), rad/sqrt(kg m^2)" > f
     print "mode,family,frequency_hz,node,x_m,z_m,ux,uy,uz,twist" > f
     for (k = 1; k <= nm; k++) {
         if (fam[k] == "axial") continue

@@ -1,10 +1,13 @@
 # lib.sh: shell helpers shared by make_report.sh and plot_scene.sh (sourced, not run): read a
-# number out of a summary.json without jq, pick CSV columns by name, format numbers.
-# Needs: awk (mawk or gawk), sed, grep; bash (BASH_SOURCE finds json_flat.awk beside this file).
-report_lib_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# number out of a summary.json with a real JSON parser (jq), pick CSV columns by name, format
+# numbers. Needs: jq, awk (mawk or gawk), sed, grep; bash.
 
-# jflat FILE: every scalar of a JSON file as "path<TAB>value" (json_flat.awk).
-jflat() { [ -s "$1" ] && awk -f "$report_lib_dir/json_flat.awk" "$1"; }
+# jflat FILE: every scalar of a JSON file as "path<TAB>value" (jq: keys and array indices joined
+# by ".", strings raw, numbers as written).
+jflat() {
+    [ -s "$1" ] && jq -r 'paths(scalars) as $p
+        | "\($p | map(tostring) | join("."))\t\(getpath($p) | if type == "string" then . else tojson end)"' "$1"
+}
 
 # jfind FILE KEY [PREFER...]: the value of the first scalar whose path is KEY or ends with ".KEY";
 # among several, the first whose path contains every PREFER word wins. Empty if none; "null" and
@@ -25,7 +28,7 @@ jfind() {
         END { print (best != "" ? best : any) }'
 }
 
-# csv_header FILE: the header line of a gallop CSV (first line that is not a comment).
+# csv_header FILE: the header line of a CSV (gallop's first line; comment lines of other CSVs skipped).
 csv_header() { awk '!/^#/ && NF { print; exit }' "$1"; }
 
 # csv_col FILE NAME: 1-based index of column NAME, empty if absent.

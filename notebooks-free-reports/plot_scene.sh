@@ -41,9 +41,10 @@ out() { printf '%s\n' "$@" >> "$md"; }
 esc() { printf '%s' "$1" | sed 's/[_^@&~{}]/\\\\&/g'; }
 gtitle=$(esc "$title")
 
-# orbit_view FILE T0 T1 XCOL YCOL [XCOL YCOL]: gnuplot ranges for an orbit panel of the rows with
-# T0 <= time <= T1: both axes to the same scale when the orbit's extents differ by less than 4x,
-# else each axis on its own (said in the panel title).
+# orbit_view FILE T0 T1 XCOL YCOL [XCOL YCOL]: an orbit panel of the rows with T0 <= time <= T1,
+# both axes to the same scale (gnuplot `set size ratio -1`: the galloping ellipse's shape as it
+# is, never stretched); the narrower extent is widened to half the larger so that a thin orbit
+# still gets a readable panel.
 orbit_view() {
     awk -v t0="$2" -v t1="$3" -v xs="$4 ${6:-}" -v ys="$5 ${7:-}" '
         BEGIN { nx = split(xs, xc, " "); split(ys, yc, " ") }
@@ -55,17 +56,13 @@ orbit_view() {
             }
         }
         END {
-            print "set size ratio 1"
-            if (!n) { print "scale = \"\""; exit }
-            hx = (x1 - x0) / 2; hy = (y1 - y0) / 2; h = hx > hy ? hx : hy; l = hx < hy ? hx : hy
-            if (h > 0 && l * 4 >= h) {
-                r = 1.1 * h
-                printf "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", (x0 + x1) / 2 - r, (x0 + x1) / 2 + r, (y0 + y1) / 2 - r, (y0 + y1) / 2 + r
-                print "scale = \", same scale\""
-            } else {
-                print "set autoscale xy"
-                print "scale = \", axes to different scales\""
-            }
+            print "set size ratio -1"
+            print "scale = \", same scale on both axes\""
+            if (!n) { print "set autoscale xy"; exit }
+            hx = (x1 - x0) / 2; hy = (y1 - y0) / 2
+            if (hx < hy / 2) hx = hy / 2; if (hy < hx / 2) hy = hx / 2
+            if (hx <= 0) hx = hy = 1e-3
+            printf "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", (x0 + x1) / 2 - 1.1 * hx, (x0 + x1) / 2 + 1.1 * hx, (y0 + y1) / 2 - 1.1 * hy, (y0 + y1) / 2 + 1.1 * hy
         }' "$1"
 }
 
@@ -109,7 +106,7 @@ md_table() {
 json_details() {
     [ -s "$1" ] || return 0
     out "<details><summary>All figures of ${2}</summary>" "" "| key | value |" "|---|---|"
-    jflat "$1" | awk -F'\t' '{ printf "| %s | %s |\n", $1, $2 }' >> "$md"
+    jflat "$1" | awk -F'\t' '{ gsub(/\|/, "\\|", $2); printf "| %s | %s |\n", $1, $2 }' >> "$md"
     out "" "</details>" ""
 }
 
@@ -245,11 +242,11 @@ for model in full reduced; do
     [ -e "$d/trace.csv" ] || [ -e "$d/summary.json" ] || continue
     if [ $sim_table_done = 0 ]; then
         out "## Galloping simulations" ""
-        out "| model | wall time (s) | frequency (Hz) | amplitude_m | time to steady (s) |" "|---|---|---|---|---|"
+        out "| model | wall time (s) | frequency (Hz) | vertical peak to peak (m) | horizontal peak to peak (m) | time to steady (s) |" "|---|---|---|---|---|---|"
         for mm in full reduced; do
             s=$dir/$mm/summary.json
             [ -s "$s" ] || continue
-            out "| $mm | $(num %.4g "$(jfind "$s" wall_time_s)") | $(num %.5g "$(jfind "$s" frequency_hz)") | $(num %.4g "$(jfind "$s" amplitude_m)") | $(num %.4g "$(jfind "$s" time_to_steady_s vertical)") |"
+            out "| $mm | $(num %.4g "$(jfind "$s" wall_time_s)") | $(num %.5g "$(jfind "$s" frequency_hz)") | $(num %.4g "$(jfind "$s" amplitude_m.vertical)") | $(num %.4g "$(jfind "$s" amplitude_m.horizontal)") | $(num %.4g "$(jfind "$s" time_to_steady_s)") |"
         done
         out ""
         sim_table_done=1
@@ -285,7 +282,10 @@ EOF
             read -r t0 t1 <<<"$(span "$dat/trace_$model.dat")"
             w=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print (b - a) / 4 }')
             e1=$(awk -v a="$t0" -v w="$w" 'BEGIN { print a + w }'); l0=$(awk -v b="$t1" -v w="$w" 'BEGIN { print b - w }')
-            plot "orbit_$model" "${model^} model: orbit of the mid-span probe, first quarter of the run (left, onset) and last quarter (right, developed galloping), as the paper's Figs. 4 and 5" 1100x560 <<EOF
+            tss=$(jfind "$d/summary.json" time_to_steady_s)
+            late="last quarter of the run"
+            [ -n "$tss" ] && awk -v a="$tss" -v b="$l0" 'BEGIN { exit !(a + 0 <= b + 0) }' && late="last quarter of the run, after the time to steady ($(num %.0f "$tss") s)"
+            plot "orbit_$model" "${model^} model: orbit of the mid-span probe, first quarter of the run (left) and ${late} (right), axes to the same scale" 1100x560 <<EOF
 set multiplot layout 1,2 title "${model^} model, $gtitle: orbit of probe $(esc "$probe") (seen along the span)"
 set xlabel "horizontal (m)"
 set ylabel "vertical (m)"
@@ -304,15 +304,19 @@ EOF
     else
         out "_No trace (${model}/trace.csv missing or empty)._" ""
     fi
-    if has_rows "$d/psd.csv" && [ -n "$(csv_col "$d/psd.csv" frequency_hz)" ]; then
-        pcols=$(csv_header "$d/psd.csv" | tr ',' '\n' | grep -v '^frequency_hz$' | tr '\n' ' ')
-        csv_pick "$d/psd.csv" frequency_hz $pcols > "$dat/psd_$model.dat"
+    psd=$d/spectrum/psd.csv   # gallop spectrum on this run's trace.csv
+    [ -e "$psd" ] || psd=$d/psd.csv
+    if has_rows "$psd" && [ -n "$(csv_col "$psd" frequency_hz)" ]; then
+        # the mid-span probe's signals (all columns of a trace without probes)
+        pcols=$(csv_header "$psd" | tr ',' '\n' | grep -v '^frequency_hz$' | grep -E '^p0?\.50*_(vertical|horizontal|twist)' | tr '\n' ' ')
+        [ -n "$pcols" ] || pcols=$(csv_header "$psd" | tr ',' '\n' | grep -v '^frequency_hz$' | tr '\n' ' ')
+        csv_pick "$psd" frequency_hz $pcols > "$dat/psd_$model.dat"
         pc="plot "; i=2
         for c in $pcols; do
             pc="$pc$( [ $i -gt 2 ] && printf ', ')\"$dat/psd_$model.dat\" using 1:(\$$i > 0 ? \$$i : NaN) lw 1.5 title \"$(esc "$c")\""
             i=$((i + 1))
         done
-        plot "psd_$model" "${model^} model: power spectral density of the probe signals (log scale)" <<EOF
+        plot "psd_$model" "${model^} model: power spectral density of the mid-span signals over the steady part of this run (gallop spectrum, Welch; log scale)" <<EOF
 set title "${model^} model, $gtitle: power spectral density"
 set xlabel "frequency (Hz)"
 set ylabel "PSD (unit^2/Hz: m^2/Hz, deg^2/Hz, N^2/Hz)"
@@ -400,19 +404,19 @@ if [ -e "$a" ]; then
         out ""
         # one block per study, in order of first appearance; chosen points apart
         awk -v dat="$dat/accuracy.dat" -v ch="$dat/accuracy_chosen.dat" '
-            { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } k = $1; m[k]++; row[k, m[k]] = $5 " " $4 " " $2
-              if ($6 == 1) print $5, $4, $1 "=" $2 > ch }
+            { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } k = $1; m[k]++; row[k, m[k]] = $5 " " $4 " " $3
+              if ($6 == 1) print $5, $4, $3 > ch }
             END { printf "" > ch
                   for (i = 1; i <= n; i++) { k = order[i]; for (j = 1; j <= m[k]; j++) print row[k, j] > dat; printf "\n\n" > dat; print k } }' \
             "$dat/accuracy_rows.dat" > "$dat/accuracy_studies.txt"
         ac="plot "; i=0
         while read -r st; do
             ac="$ac\"$dat/accuracy.dat\" index $i using 1:(\$2 > 0 ? \$2 : NaN) with linespoints pt 7 ps 1 lw 2 lc $((i + 1)) title \"${st//_/ }\", "
+            ac="$ac\"$dat/accuracy.dat\" index $i using 1:(\$2 > 0 ? \$2 : NaN):3 with labels offset char 0.8,0.8 left font \",8\" tc lt $((i + 1)) noenhanced notitle, "
             i=$((i + 1))
         done < "$dat/accuracy_studies.txt"
         ac="$ac\"$dat/accuracy_chosen.dat\" using 1:(\$2 > 0 ? \$2 : NaN) with points pt 6 ps 3 lw 2 lc rgb \"black\" title \"chosen\""
-        ac="$ac, \"\" using 1:(\$2 > 0 ? \$2 : NaN):3 with labels offset char 1,1 left font \",8\" noenhanced notitle"
-        plot accuracy "Accuracy against time: error against wall time for each study (log-log); circled, the setting chosen in each study" <<EOF
+        plot accuracy "Accuracy against time: error against wall time for each study (log-log), each point labelled by its setting's value; circled, the setting chosen in each study" <<EOF
 set title "Accuracy against time, $gtitle"
 set xlabel "wall time (s)"
 set ylabel "error (relative, against the finest setting)"

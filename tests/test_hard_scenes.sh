@@ -144,8 +144,8 @@ for model in reduced full; do
     if zero_heap run "wind_reversal.$model" simulate "$H/wind_reversal.ini" --model "$model" "$@"; then
         tr=$(awk -F' *= *' '/^wind_reverse_time/{print $2+0}' "$H/wind_reversal.ini")
         [ $model = full ] && tr=15
-        read -r before after < <(awk -F, -v tr="$tr" 'NR>2 && $1>tr/3 && $1<tr {a+=$2; na++}
-             NR>2 && $1>tr+tr/3 {b+=$2; nb++} END{printf "%.4g %.4g\n", a/na, b/nb}' "$tmp/wind_reversal.$model/trace.csv")
+        read -r before after < <(awk -F, -v tr="$tr" 'NR>1 && $1>tr/3 && $1<tr {a+=$2; na++}
+             NR>1 && $1>tr+tr/3 {b+=$2; nb++} END{printf "%.4g %.4g\n", a/na, b/nb}' "$tmp/wind_reversal.$model/trace.csv")
         awk -v a="$before" -v b="$after" 'BEGIN{exit !(a > 0 && b < 0)}' \
             && ok "wind_reversal $model: horizontal mean $before m before, $after m after the reversal at $tr s" \
             || bad "wind_reversal $model: horizontal mean $before m before, $after m after"
@@ -155,8 +155,8 @@ done
 # twist past 360 deg: the full model; the reduced model (a basis identified on small twists) may
 # refuse with a reason
 if zero_heap run twist_accumulation.full simulate "$H/twist_accumulation.ini" --model full; then
-    tw=$(awk -F, 'NR==2{for(i=1;i<=NF;i++) if($i ~ /_twist_deg$/) c[i]=1}
-         NR>2{for(i in c){v=$i<0?-$i:$i; if(v>mx)mx=v}} END{printf "%.1f", mx}' "$tmp/twist_accumulation.full/trace.csv")
+    tw=$(awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i ~ /_twist_deg$/) c[i]=1}
+         NR>1{for(i in c){v=$i<0?-$i:$i; if(v>mx)mx=v}} END{printf "%.1f", mx}' "$tmp/twist_accumulation.full/trace.csv")
     awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation full: max |twist| $tw deg" \
         || bad "twist_accumulation full: max |twist| only $tw deg"
 fi
@@ -176,7 +176,7 @@ fi
 # vs 1.050 m in the sanitizer build); the mean within 10 %; and the last two
 # ten-minute windows (40-50, 50-60 min) agree within 1 % in both.
 if run long_run simulate "$H/long_run.ini"; then
-    read -r r1 m1 r3 m3 r2 m2 < <(awk -F, 'NR>2 {w=-1; if($1>=1200 && $1<1800) w=1; if($1>=2400 && $1<3000) w=3;
+    read -r r1 m1 r3 m3 r2 m2 < <(awk -F, 'NR>1 {w=-1; if($1>=1200 && $1<1800) w=1; if($1>=2400 && $1<3000) w=3;
          if($1>=3000) w=2; if(w>0){s[w]+=$3; ss[w]+=$3*$3; n[w]++}}
          END{for(w=1;w<=3;w++){m=s[w]/n[w]; printf "%.5g %.5g ", sqrt(ss[w]/n[w]-m*m), m} print ""}' \
          "$tmp/long_run/trace.csv")

@@ -2,7 +2,7 @@
 # test_report.sh: smoke test of notebooks-free-reports/ (make_report.sh, plot_scene.sh, the JSON
 # reader). Runs by tests/run.sh with GALLOP = the built binary; ends with "#summary P F".
 #  1. plot_scene.sh on a made-up output directory (fixture.sh): report.md and every figure.
-#  2. json_flat.awk / jfind: nested keys, preferences, arrays.
+#  2. jflat (jq) / jfind: nested keys, preferences, arrays.
 #  3. make_report.sh with a stand-in gallop that has only some commands: the missing ones are
 #     noted, not errors; REPORT_SET, REPORT_DURATION and the GJ factors reach the command lines.
 #  4. make_report.sh with the real binary: if it has `gallop modes` and data/scenes has a scene,

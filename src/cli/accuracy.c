@@ -12,13 +12,10 @@
 #include "gallop/output/accreport.h"
 #include "gallop/scene/scene.h"
 
-#define MAX_ARGS 1024
-
 static int bad(const char *what, const char *arg)
 {
-    fprintf(stderr, "gallop accuracy: %s%s%s\nusage: gallop accuracy SCENE [-o DIR] [--set section.key=value ...] "
-            "[--tolerance E] [--study NAME ...]\n  studies: elements, modes, time_step, tolerance, effects\n",
-            what, arg ? " " : "", arg ? arg : "");
+    fprintf(stderr, "gallop accuracy: %s%s%s\n", what, arg ? " " : "", arg ? arg : "");
+    gal_cli_usage(stderr, gal_cli_command_find("accuracy"));
     return 2;
 }
 
@@ -38,38 +35,40 @@ static int add_studies(const char *list, unsigned *mask)
     return 0;
 }
 
+/* --study NAME... and --tolerance E into the options */
+static int own_options(const gal_cli_command *c, const gal_cli_args *a, gal_acc_opts *o)
+{
+    unsigned mask = 0;
+    const char *const *st;
+    int n = gal_cli_values(c, a, "study", &st);
+    for (int i = 0; i < n; i++) {
+        int rc = add_studies(st[i], &mask);
+        if (rc) return rc;
+    }
+    if (mask) o->studies = mask;
+    const char *v = gal_cli_value(c, a, "tolerance");
+    if (v) {
+        char *end;
+        o->tolerance = strtod(v, &end);
+        if (end == v || *end || !(o->tolerance > 0 && o->tolerance < 1))
+            return bad("--tolerance: want a relative error in (0, 1), got", v);
+    }
+    return 0;
+}
+
 int gal_cli_accuracy(int argc, char **argv)
 {
     gal_acc_opts o;
     gal_accuracy_default_opts(&o);
-    unsigned mask = 0;
-    /* the command's own options (--study is repeatable); the rest go to the scene loader */
-    char *rest[MAX_ARGS];
-    int nrest = 0;
-    if (argc > MAX_ARGS) return bad("too many arguments", NULL);
-    for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        if (i > 0 && (!strcmp(a, "--study") || !strcmp(a, "--tolerance"))) {
-            if (i + 1 >= argc) return bad("missing value after", a);
-            const char *v = argv[++i];
-            if (!strcmp(a, "--study")) {
-                int rc = add_studies(v, &mask);
-                if (rc) return rc;
-            } else {
-                char *end;
-                o.tolerance = strtod(v, &end);
-                if (end == v || *end || !(o.tolerance > 0 && o.tolerance < 1))
-                    return bad("--tolerance: want a relative error in (0, 1), got", v);
-            }
-        } else {
-            rest[nrest++] = argv[i];
-        }
-    }
-    if (mask) o.studies = mask;
+    const gal_cli_command *c = gal_cli_command_find("accuracy");
+    gal_cli_args args;
+    int rc = gal_cli_parse(c, argc, argv, &args);
+    if (!rc) rc = own_options(c, &args, &o);
+    if (rc) return rc;
     o.progress = isatty(2);
     gal_scene sc;
     const char *outdir = NULL;
-    int rc = gal_cli_load_scene(nrest, rest, &sc, &outdir);
+    rc = gal_cli_scene(c, &args, &sc, &outdir);
     if (rc) return rc;
     gal_acc_result r;
     int st = gal_accuracy_run(&sc, &o, &r);

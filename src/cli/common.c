@@ -1,5 +1,7 @@
-/* cli/common.c: what the sub-commands share: reading SCENE [--set section.key=value ...] [-o DIR]
- * from the command line, loading the scene and reading the tables it names. */
+/* cli/common.c: what the sub-commands share: the option parser (getopt_long over the command's
+ * table of usage.c), reading SCENE [--set section.key=value ...] [-o DIR] and loading the scene
+ * and the tables it names. */
+#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -8,49 +10,104 @@
 #include "gallop/model/tables.h"
 #include "gallop/scene/scene.h"
 
-#define MAX_SETS 256
-
-static int usage_error(const char *cmd, const char *what, const char *arg)
+static int usage_error(const gal_cli_command *c, const char *what, const char *arg)
 {
-    fprintf(stderr, "gallop %s: %s%s%s\nusage: gallop %s SCENE [--set section.key=value ...] "
-            "[-o DIR]\n", cmd, what, arg ? " " : "", arg ? arg : "", cmd);
+    fprintf(stderr, "gallop %s: %s%s%s\nusage: ", c->name, what, arg ? " " : "", arg ? arg : "");
+    gal_cli_synopsis(stderr, c);
+    fprintf(stderr, "(gallop %s --help for more)\n", c->name);
     return 2;
 }
 
-int gal_cli_load_scene_opts(int argc, char **argv, gal_scene *sc, const char **outdir,
-                            const char *const *opts, const char **vals)
+/* getopt_long's table: the command's options (val 256 + index) and --help */
+static void long_options(const gal_cli_command *c, struct option *lo, char *shorts)
 {
-    const char *cmd = argc > 0 && argv[0] ? argv[0] : "?";
-    const char *sets[MAX_SETS];
-    const char *scene = NULL, *dir = NULL;
-    int nsets = 0;
-    for (int j = 0; opts && opts[j]; j++) vals[j] = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int j = -1;
-        for (int q = 0; opts && opts[q]; q++)
-            if (!strcmp(a, opts[q])) j = q;
-        if (j >= 0) {
-            if (i + 1 >= argc) return usage_error(cmd, "missing value after", a);
-            vals[j] = argv[++i];
-        } else if (!strcmp(a, "--set") || !strncmp(a, "--set=", 6)) {
-            const char *v = a[5] == '=' ? a + 6 : (i + 1 < argc ? argv[++i] : NULL);
-            if (!v) return usage_error(cmd, "missing section.key=value after", a);
-            if (nsets == MAX_SETS) return usage_error(cmd, "too many --set options", NULL);
-            sets[nsets++] = v;
-        } else if (!strcmp(a, "-o")) {
-            if (i + 1 >= argc) return usage_error(cmd, "missing directory after", a);
-            dir = argv[++i];
-        } else if (a[0] == '-' && a[1] != '\0') {
-            return usage_error(cmd, "unknown option", a);
-        } else if (scene) {
-            return usage_error(cmd, "more than one scene:", a);
-        } else {
-            scene = a;
+    int n = 0, ns = 0;
+    shorts[ns++] = ':';   /* ':' for a missing value */
+    shorts[ns++] = 'h';
+    for (int i = 0; i < GAL_CLI_MAX_OPTS && c->opt[i].name; i++, n++) {
+        lo[n] = (struct option){c->opt[i].name, c->opt[i].arg ? required_argument : no_argument, NULL, 256 + i};
+        if (c->opt[i].shortopt) {
+            shorts[ns++] = c->opt[i].shortopt;
+            if (c->opt[i].arg) shorts[ns++] = ':';
         }
     }
-    if (!scene) return usage_error(cmd, "no scene given", NULL);
-    int st = gal_scene_load(sc, scene, sets, nsets, NULL);
+    lo[n++] = (struct option){"help", no_argument, NULL, 'h'};
+    lo[n] = (struct option){NULL, 0, NULL, 0};
+    shorts[ns] = '\0';
+}
+
+static int short_index(const gal_cli_command *c, int ch)
+{
+    for (int i = 0; i < GAL_CLI_MAX_OPTS && c->opt[i].name; i++)
+        if (c->opt[i].shortopt == ch) return i;
+    return -1;
+}
+
+int gal_cli_parse(const gal_cli_command *c, int argc, char **argv, gal_cli_args *a)
+{
+    struct option lo[GAL_CLI_MAX_OPTS + 2];
+    char shorts[2 * GAL_CLI_MAX_OPTS + 3];
+    memset(a, 0, sizeof *a);
+    long_options(c, lo, shorts);
+    opterr = 0;
+    optind = 0;   /* glibc: a full re-initialization (argv may be parsed more than once) */
+    for (int ch; (ch = getopt_long(argc, argv, shorts, lo, NULL)) != -1;) {
+        int i = ch >= 256 ? ch - 256 : short_index(c, ch);
+        if (ch == 'h') {
+            a->help = 1;
+        } else if (ch == ':') {
+            return usage_error(c, "missing value after", argv[optind - 1]);
+        } else if (ch == '?' || i < 0) {
+            char s[3] = {'-', (char)optopt, '\0'};
+            return usage_error(c, "unknown option", optopt ? s : argv[optind - 1]);
+        } else if (a->nval[i] == GAL_CLI_MAX_VALS) {
+            return usage_error(c, "too many values of option", c->opt[i].name);
+        } else {
+            a->val[i][a->nval[i]++] = optarg;
+        }
+    }
+    if (a->help) return 0;
+    for (int k = optind; k < argc; k++) {
+        if (!c->operand) return usage_error(c, "takes no argument:", argv[k]);
+        if (a->operand) {
+            char what[64];
+            snprintf(what, sizeof what, "more than one %s:", c->what);
+            return usage_error(c, what, argv[k]);
+        }
+        a->operand = argv[k];
+    }
+    if (c->operand && !a->operand) {
+        char what[64];
+        snprintf(what, sizeof what, "no %s given", c->what);
+        return usage_error(c, what, NULL);
+    }
+    return 0;
+}
+
+int gal_cli_values(const gal_cli_command *c, const gal_cli_args *a, const char *name, const char *const **vals)
+{
+    for (int i = 0; i < GAL_CLI_MAX_OPTS && c->opt[i].name; i++)
+        if (!strcmp(c->opt[i].name, name)) {
+            *vals = a->val[i];
+            return a->nval[i];
+        }
+    *vals = NULL;
+    return 0;
+}
+
+const char *gal_cli_value(const gal_cli_command *c, const gal_cli_args *a, const char *name)
+{
+    const char *const *v;
+    int n = gal_cli_values(c, a, name, &v);
+    return n > 0 ? v[n - 1] : NULL;
+}
+
+int gal_cli_scene(const gal_cli_command *c, const gal_cli_args *a, gal_scene *sc, const char **outdir)
+{
+    const char *const *sets;
+    int nsets = gal_cli_values(c, a, "set", &sets);
+    const char *dir = gal_cli_value(c, a, "output");
+    int st = gal_scene_load(sc, a->operand, sets, nsets, NULL);
     if (st == GAL_OK && sc->ice.aero_table[0]) {
         /* the table is read now, whatever the command: a bad one is bad input before any output */
         gal_aero_table *t = NULL;
@@ -58,16 +115,32 @@ int gal_cli_load_scene_opts(int argc, char **argv, gal_scene *sc, const char **o
         gal_aero_table_free(t);
     }
     if (st != GAL_OK) {
-        fprintf(stderr, "gallop %s: %s\n", cmd, gal_error_message());
+        fprintf(stderr, "gallop %s: %s\n", c->name, gal_error_message());
         return gal_exit_code(st);
     }
     if (dir) {
         if (!*dir || strlen(dir) >= sizeof sc->output.directory)
-            return usage_error(cmd, "-o: directory name empty or too long:", dir);
+            return usage_error(c, "-o: directory name empty or too long:", dir);
         strcpy(sc->output.directory, dir);
     }
     if (outdir) *outdir = sc->output.directory;
     return 0;
+}
+
+int gal_cli_load_scene_opts(int argc, char **argv, gal_scene *sc, const char **outdir,
+                            const char *const *opts, const char **vals)
+{
+    const gal_cli_command *c = gal_cli_command_find(argc > 0 ? argv[0] : NULL);
+    if (!c) {
+        fprintf(stderr, "gallop: no such command '%s'\n", argc > 0 && argv[0] ? argv[0] : "?");
+        return 2;
+    }
+    gal_cli_args a;
+    int rc = gal_cli_parse(c, argc, argv, &a);
+    if (rc) return rc;
+    for (int j = 0; opts && opts[j]; j++)
+        vals[j] = gal_cli_value(c, &a, opts[j] + (opts[j][0] == '-' && opts[j][1] == '-' ? 2 : 0));
+    return gal_cli_scene(c, &a, sc, outdir);
 }
 
 int gal_cli_load_scene(int argc, char **argv, gal_scene *sc, const char **outdir)

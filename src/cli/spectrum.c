@@ -12,26 +12,11 @@
 #include "gallop/analysis/trace_spectrum.h"
 #include "gallop/output/specreport.h"
 
-static const char *usage_text =
-    "usage: gallop spectrum TRACE.csv [--column NAME]... [--pair Y,Z]... [--from T] [--segment N]\n"
-    "                       [-o DIR]\n"
-    "  TRACE.csv     header of column names; time column `time`, `t` or `time_s`, else the first;\n"
-    "                uniform time step\n"
-    "  --column NAME analyse this column (repeatable; default: every column but time)\n"
-    "  --pair Y,Z    orbit ellipse of horizontal Y and vertical Z (repeatable; default: the\n"
-    "                columns named *_y/*_z or *_horizontal/*_vertical)\n"
-    "  --from T      steady part starts at time T, s (default: the latest time to steady of the\n"
-    "                columns, but not after the middle of the record)\n"
-    "  --segment N   Welch segment, samples (default: largest power of two giving >= 8 segments,\n"
-    "                at least 256)\n"
-    "  -o DIR        output directory (default: the directory of TRACE.csv + /spectrum)\n"
-    "writes DIR/summary.json and DIR/psd.csv; exit status 0 ok, 1 computation failed, 2 bad input\n";
-
 typedef struct {
     const char *path, *outdir;
-    const char **columns;
+    const char *const *columns;
     size_t ncolumns;
-    const char **pairs;   /* "Y,Z" */
+    const char *const *pairs;   /* "Y,Z" */
     size_t npairs;
     double from;          /* NaN: automatic */
     long segment;         /* 0: chosen */
@@ -43,56 +28,25 @@ static int fail(int status)
     return gal_exit_code(status);
 }
 
-/* "--name value" or "--name=value"; returns the value or NULL, advancing *i. */
-static const char *opt_value(int argc, char **argv, int *i, const char *name, int *bad)
+/* the parsed arguments into the options */
+static int get_options(const gal_cli_command *c, const gal_cli_args *a, options *o)
 {
-    size_t ln = strlen(name);
-    if (strncmp(argv[*i], name, ln) != 0) return NULL;
-    if (argv[*i][ln] == '=') return argv[*i] + ln + 1;
-    if (argv[*i][ln] != '\0') return NULL;
-    if (*i + 1 >= argc) {
-        *bad = gal_error(GAL_EINPUT, "option %s needs a value", name);
-        return NULL;
-    }
-    return argv[++*i];
-}
-
-static int parse_args(int argc, char **argv, options *o)
-{
+    const char *v;
+    char *end;
     o->from = NAN;
-    o->columns = calloc((size_t)argc, sizeof *o->columns);
-    o->pairs = calloc((size_t)argc, sizeof *o->pairs);
-    if (!o->columns || !o->pairs) return gal_error(GAL_ENOMEM, "out of memory");
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int bad = 0;
-        char *end;
-        if ((v = opt_value(argc, argv, &i, "--column", &bad))) {
-            o->columns[o->ncolumns++] = v;
-        } else if (!bad && (v = opt_value(argc, argv, &i, "--pair", &bad))) {
-            o->pairs[o->npairs++] = v;
-        } else if (!bad && (v = opt_value(argc, argv, &i, "--from", &bad))) {
-            o->from = strtod(v, &end);
-            if (!*v || *end || !isfinite(o->from))
-                return gal_error(GAL_EINPUT, "--from '%s': a time in s is needed", v);
-        } else if (!bad && (v = opt_value(argc, argv, &i, "--segment", &bad))) {
-            o->segment = strtol(v, &end, 10);
-            if (!*v || *end || o->segment < 8 || o->segment > (1L << 28))
-                return gal_error(GAL_EINPUT, "--segment '%s': an integer from 8 to %ld samples",
-                                 v, 1L << 28);
-        } else if (!bad && (v = opt_value(argc, argv, &i, "-o", &bad))) {
-            o->outdir = v;
-        } else if (bad) {
-            return bad;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return gal_error(GAL_EINPUT, "unknown option '%s'", argv[i]);
-        } else if (o->path) {
-            return gal_error(GAL_EINPUT, "one trace only: '%s' and '%s'", o->path, argv[i]);
-        } else {
-            o->path = argv[i];
-        }
+    o->path = a->operand;
+    o->outdir = gal_cli_value(c, a, "output");
+    o->ncolumns = (size_t)gal_cli_values(c, a, "column", &o->columns);
+    o->npairs = (size_t)gal_cli_values(c, a, "pair", &o->pairs);
+    if ((v = gal_cli_value(c, a, "from"))) {
+        o->from = strtod(v, &end);
+        if (!*v || *end || !isfinite(o->from)) return gal_error(GAL_EINPUT, "--from '%s': a time in s is needed", v);
     }
-    if (!o->path) return gal_error(GAL_EINPUT, "no trace given");
+    if ((v = gal_cli_value(c, a, "segment"))) {
+        o->segment = strtol(v, &end, 10);
+        if (!*v || *end || o->segment < 8 || o->segment > (1L << 28))
+            return gal_error(GAL_EINPUT, "--segment '%s': an integer from 8 to %ld samples", v, 1L << 28);
+    }
     return GAL_OK;
 }
 
@@ -179,24 +133,20 @@ static int run(const options *o, const gal_trace *tr, double t_start)
 int gal_cli_spectrum(int argc, char **argv)
 {
     double t_start = gal_wall_time();
-    for (int i = 1; i < argc; i++)
-        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
-            fputs(usage_text, stdout);
-            return 0;
-        }
+    const gal_cli_command *c = gal_cli_command_find("spectrum");
+    gal_cli_args args;
+    int rc = gal_cli_parse(c, argc, argv, &args);
+    if (rc) return rc;
     options o = {0};
     gal_trace *tr = NULL;
-    int st = parse_args(argc, argv, &o);
+    int st = get_options(c, &args, &o);
     if (st == GAL_EINPUT) {
-        fprintf(stderr, "gallop spectrum: %s\n%s", gal_error_message(), usage_text);
-        free(o.columns);
-        free(o.pairs);
+        fprintf(stderr, "gallop spectrum: %s\n", gal_error_message());
+        gal_cli_usage(stderr, c);
         return 2;
     }
     if (!st) st = gal_trace_read(o.path, &tr);
     if (!st) st = run(&o, tr, t_start);
     gal_trace_free(tr);
-    free(o.columns);
-    free(o.pairs);
     return st ? fail(st) : 0;
 }

@@ -1,4 +1,4 @@
-/* cli/version.c: `gallop version`. */
+/* cli/version.c: `gallop version` and `gallop --version`: the version and the git commit built. */
 #include <stdio.h>
 
 #include "cli.h"
@@ -8,6 +8,6 @@ int gal_cli_version(int argc, char **argv)
 {
     (void)argc;
     (void)argv;
-    printf("gallop %s\n", gal_record_version());
+    printf("gallop %s (commit %s)\n", gal_record_version(), gal_record_commit());
     return 0;
 }

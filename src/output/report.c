@@ -62,7 +62,6 @@ static int write_shapes(gal_outset *o, const gal_equilibrium *eq, const gal_mode
     const gal_rod *rod = eq->rod;
     double *full = calloc((size_t)rod->nq, sizeof(double));
     if (!full) { gal_outset_close(o, fp); return gal_error(GAL_ENOMEM, "out of memory"); }
-    fprintf(fp, "# mass-normalized shapes of the selected modes (phi^T M phi = 1): m/sqrt(kg), rad/sqrt(kg m^2)\n");
     fprintf(fp, "mode,family,frequency_hz,node,x_m,z_m,ux,uy,uz,twist\n");
     for (int k = 0; k < md->n; k++) {
         const gal_mode *m = md->mode + k;
@@ -96,6 +95,13 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_equilibri
     gal_json_kv_int(j, "dofs", eq->rod->ndof);
     gal_json_kv_int(j, "newton_iterations", eq->newton_iterations);
     gal_json_kv_num(j, "wall_time_s", wall);
+    /* what shapes.csv holds (the CSV itself starts with its header line) */
+    gal_json_key(j, "shapes_csv");
+    gal_json_obj_begin(j);
+    gal_json_kv_str(j, "holds", "mass-normalized shapes of the selected modes (phi^T M phi = 1), one block per "
+                    "mode separated by two blank lines");
+    gal_json_kv_str(j, "units", "x_m, z_m: m (equilibrium); ux, uy, uz: m/sqrt(kg); twist: rad/sqrt(kg m^2)");
+    gal_json_obj_end(j);
     gal_json_key(j, "counters");
     gal_json_obj_begin(j);
     gal_json_kv_int(j, "length_iterations", eq->length_iterations);

@@ -3,6 +3,7 @@
  * compare.csv and summary.json of `gallop compare`. */
 #include "gallop/output/simreport.h"
 #include "gallop/base/core.h"
+#include "gallop/output/cigrereport.h"
 #include "gallop/output/json.h"
 #include "gallop/output/ofile.h"
 #include "gallop/output/outset.h"
@@ -86,10 +87,19 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
     gal_json_kv_str(j, "scene", sc->path);
     gal_json_kv_num(j, "duration_s", r->time[r->nsamples - 1]);
     gal_json_kv_num(j, "output_interval_s", r->dt_out);
+    /* what trace.csv holds (the CSV itself starts with its header line) */
+    gal_json_key(j, "trace_csv");
+    gal_json_obj_begin(j);
+    gal_json_kv_str(j, "model", r->kind == GAL_MODEL_FULL ? "full" : "reduced");
+    gal_json_kv_str(j, "holds", "time_s; per probe p<a> (a: fraction of the span) the displacements from the "
+                    "equilibrium, horizontal (y, downwind), vertical (z, up), along (x), m, and the twist, deg; "
+                    "the support tensions, N");
+    gal_json_obj_end(j);
     int mid = gal_sim_mid_probe(r), st;
     gal_sim_measures mm;
     if ((st = gal_sim_measure(r, mid, -1, &mm))) return st;
     json_run(j, r, &mm);
+    double from[GAL_MAX_PROBES];
     gal_json_key(j, "probes");
     gal_json_arr_begin(j);
     for (int k = 0; k < r->nprobe; k++) {
@@ -98,17 +108,18 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
         gal_json_obj_begin(j);
         gal_json_kv_num(j, "position", r->probe[k]);
         json_measures(j, &m);
+        from[k] = m.steady_from_s;
+        if ((st = gal_cigre_json_probe(j, sc, r, k, from[k]))) return st;   /* ellipse, clearances */
         gal_json_obj_end(j);
     }
     gal_json_arr_end(j);
-    return GAL_OK;
+    /* the rated strength: not in the scene yet (the conductor table's column is #17's inputs) */
+    return gal_cigre_json_run(j, sc, r, from, NAN);
 }
 
 /* the trace of a run, one line per sample */
 static void trace_csv(FILE *fp, const gal_sim_result *res)
 {
-    fprintf(fp, "# %s model; displacements from the equilibrium at the probes (fractions of the span)\n",
-            res->kind == GAL_MODEL_FULL ? "full" : "reduced");
     fprintf(fp, "time_s");
     for (int k = 0; k < res->nprobe; k++) {
         double a = res->probe[k];

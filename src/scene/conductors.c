@@ -1,6 +1,7 @@
 /* conductors.c: the conductor table (data/conductors.csv): the row that [conductor] name asks
  * for fills the conductor keys the scene does not give; every row is checked. */
 #include "scene_impl.h"
+#include "gallop/base/datadir.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -161,13 +162,14 @@ int scn_load_conductor(pstate *ps, const char *csv)
     return 1;
 }
 
-/* The table conductor.name refers to: given, $GALLOP_DATA/conductors.csv,
- * ./data/conductors.csv, or <scene dir>/../conductors.csv. */
+/* The table conductor.name refers to: given, $GALLOP_DATA/conductors.csv, the installed data
+ * directory's (base/datadir.h), ./data/conductors.csv, or <scene dir>/../conductors.csv. */
 void scn_conductor_table(const pstate *ps, const char *given, char *out, size_t n)
 {
-    const char *env = getenv("GALLOP_DATA");
+    const char *env = getenv("GALLOP_DATA"), *inst = gal_datadir_installed();
     if (given) snprintf(out, n, "%s", given);
     else if (env && *env) snprintf(out, n, "%s/conductors.csv", env);
+    else if (*inst && (snprintf(out, n, "%s/conductors.csv", inst), access(out, R_OK) == 0)) return;
     else if (access("data/conductors.csv", R_OK) == 0) snprintf(out, n, "data/conductors.csv");
     else snprintf(out, n, "%s/../conductors.csv", ps->dir);
 }

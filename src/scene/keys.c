@@ -120,6 +120,9 @@ const keydef scn_keys[K_COUNT] = {
      "rest | mean_wind (rest: the wind ramps in over wind_ramp; mean_wind: from the equilibrium under the mean wind)",
      scn_start_names},
     {"output", "directory", T_DIR, 0, 0, 0, 0, 0, 1.0, "path", NULL},
+    {"output", "neighbour_phases", T_PAIRS, 0, -1000, 1000, 0, 0, 1.0,
+     "m, y1, z1, y2, z2, ...: neighbouring phases at rest, offsets (horizontal downwind, up) from this "
+     "conductor's equilibrium; the galloping ellipse's clearance to each is reported", NULL},
 };
 
 const char *scn_key_name(int k)

@@ -169,6 +169,14 @@ static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
     fprintf(fp, "\n[output]\n");
     fprintf(fp, "; path\n");
     fprintf(fp, "directory = %s\n", sc->output.directory);
+    if (sc->output.nneighbours > 0) {
+        char nb[64];
+        fprintf(fp, "; %s\nneighbour_phases = ", scn_keys[K_NEIGHBOURS].unit);
+        for (int i = 0; i < sc->output.nneighbours; i++)
+            for (int c = 0; c < 2; c++)
+                fprintf(fp, "%s%s", i + c ? ", " : "", scn_fmt_num(sc->output.neighbour[i][c], nb, sizeof nb));
+        fputc('\n', fp);
+    }
 }
 
 void gal_scene_print(const gal_scene *sc, FILE *fp)

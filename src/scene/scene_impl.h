@@ -14,7 +14,7 @@
 
 /* ---- the keys: one row per key of DESIGN.md's table (keys.c) ---- */
 
-enum { T_NUM, T_INT, T_LONG, T_ENUM, T_NAME, T_PATH, T_DIR, T_FX, T_PROBES };
+enum { T_NUM, T_INT, T_LONG, T_ENUM, T_NAME, T_PATH, T_DIR, T_FX, T_PROBES, T_PAIRS };
 
 enum {
     K_LENGTH, K_HDIFF, K_TENSION, K_SAG, K_ULENGTH, K_TWIST, K_RTSFRAC, K_TEMP,
@@ -26,7 +26,7 @@ enum {
     K_FX0, K_FXLAST = K_FX0 + GAL_FX_COUNT - 1,
     K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW, K_REDUCED, K_RESTOL, K_ONINV,
     K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL, K_START,
-    K_DIR, K_COUNT
+    K_DIR, K_NEIGHBOURS, K_COUNT
 };
 
 typedef struct {

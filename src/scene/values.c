@@ -247,6 +247,31 @@ static int apply_fx(kv *a)
 }
 
 /* "0.25, 0.5": 1 to GAL_MAX_PROBES fractions of the span */
+/* output.neighbour_phases: "y1, z1, y2, z2, ...", m, an even count of numbers in the key's range */
+static int apply_pairs(kv *a)
+{
+    double p[2 * GAL_MAX_NEIGHBOURS];
+    int np = 0;
+    char buf[VALMAX], al[160];
+    snprintf(al, sizeof al, "y1, z1, y2, z2, ...: 1 to %d pairs of offsets in m, each in [%g, %g]",
+             GAL_MAX_NEIGHBOURS, scn_keys[a->k].lo, scn_keys[a->k].hi);
+    snprintf(buf, sizeof buf, "%s", a->v);
+    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        while (*t == ' ' || *t == '\t') t++;
+        size_t n = strlen(t);
+        while (n && (t[n - 1] == ' ' || t[n - 1] == '\t')) t[--n] = '\0';
+        if (np == 2 * GAL_MAX_NEIGHBOURS) return bad(a, GAL_EINPUT, "too many numbers; allowed: %s", al);
+        if (!scn_parse_num(t, &p[np])) return bad(a, GAL_EINPUT, "'%s' is not a number; allowed: %s", t, al);
+        if (!(p[np] >= scn_keys[a->k].lo && p[np] <= scn_keys[a->k].hi))
+            return bad(a, GAL_EINPUT, "%s is out of range; allowed: %s", t, al);
+        np++;
+    }
+    if (np == 0 || np % 2) return bad(a, GAL_EINPUT, "%d numbers; allowed: %s", np, al);
+    memcpy(a->ps->sc->output.neighbour, p, sizeof p[0] * (size_t)np);
+    a->ps->sc->output.nneighbours = np / 2;
+    return 1;
+}
+
 static int apply_probes(kv *a)
 {
     double p[GAL_MAX_PROBES];
@@ -294,6 +319,7 @@ int scn_apply(pstate *ps, int k, const char *v, int line)
     case T_PATH: ok = apply_path(&a); break;
     case T_FX: ok = apply_fx(&a); break;
     case T_PROBES: ok = apply_probes(&a); break;
+    case T_PAIRS: ok = apply_pairs(&a); break;
     }
     if (!ok) return 0;
     ps->given[k] = line;

@@ -11,6 +11,7 @@ extern "C" {
 
 #define GAL_PATH_MAX 1024
 #define GAL_MAX_PROBES 16
+#define GAL_MAX_NEIGHBOURS 8
 
 /* How the equilibrium is specified: exactly one of these ([span] horizontal_tension, sag,
  * unstretched_length, tension_rts, or a [stringing] condition). TENSION_RTS and STRINGING are
@@ -148,6 +149,9 @@ typedef struct gal_scene {
 
     struct {
         char directory[GAL_PATH_MAX]; /* default out/<scene name> */
+        int nneighbours;          /* neighbouring phases (at rest) for the clearances, 0 to 8 */
+        double neighbour[GAL_MAX_NEIGHBOURS][2]; /* m: their offsets y (horizontal, downwind), z
+                                   * (up) from this conductor's equilibrium at the same point */
     } output;
 } gal_scene;
 
@@ -160,7 +164,8 @@ extern const char *const gal_effect_names[GAL_FX_COUNT];
  * unstretched_length replaces the file's choice among them; a relative ice.aero_table given by
  * --set is taken from the current directory (from the scene's directory in the file).
  * `conductors_csv` is the table that conductor.name refers to (NULL: $GALLOP_DATA/conductors.csv
- * if GALLOP_DATA is set, else data/conductors.csv if it exists in the current directory, else
+ * if GALLOP_DATA is set, else the installed data directory's (gallop/base/datadir.h) if it has
+ * one, else data/conductors.csv if it exists in the current directory, else
  * conductors.csv in the parent of the scene's directory, since scenes live in data/scenes/).
  * The table is read only when conductor.name is given; the scene's conductor keys override its
  * row. An [ice] aero_table is resolved and must be a readable regular file; its contents are not
