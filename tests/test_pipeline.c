@@ -39,7 +39,9 @@ static void test_stops_at_the_stage_asked(void)
     for (int k = 0; k < d->md.n; k++) sel += d->md.mode[k].selected;
     CHECK(sel == m->want[0] + m->want[1] + m->want[2], "%d modes selected, %d wanted", sel,
           m->want[0] + m->want[1] + m->want[2]);
-    CHECK(m->damping_ratio == 0 || d->rayleigh_mass > 0, "damping fitted to the modes");
+    CHECK(d->damping && (m->damping_ratio == 0 || (d->damping->kind == GAL_DAMPING_MODAL && d->damping->nb > 0 &&
+                                                    d->damping->zeta == m->damping_ratio)),
+          "the structural damping built at the modes");
     CHECK(!d->q_start && !d->rm, "nothing after the modes");
     const gal_rod *rod = d->eq.rod;
     CHECK(gal_forward(m, d, GAL_STAGE_START) == GAL_OK, "%s", gal_error_message());
@@ -167,7 +169,9 @@ static void test_repeatable(void)
     int nq = a->eq.rod->nq, n = a->md.ndof;
     CHECK(same_doubles(a->eq.q, b->eq.q, nq) && a->eq.unstretched_length == b->eq.unstretched_length, "equilibrium");
     CHECK(a->md.n == b->md.n && same_doubles(a->md.shape, b->md.shape, (size_t)n * a->md.n), "modes");
-    CHECK(a->rayleigh_mass == b->rayleigh_mass && a->rayleigh_stiffness == b->rayleigh_stiffness, "damping");
+    CHECK(a->damping->kind == b->damping->kind && a->damping->nb == b->damping->nb &&
+          same_doubles(a->damping->omega, b->damping->omega, a->damping->nb) &&
+          same_doubles(a->damping->mphi, b->damping->mphi, (size_t)a->damping->nb * a->damping->ndof), "damping");
     CHECK(same_doubles(a->q_start, b->q_start, nq) && !same_doubles(a->q_start, a->eq.q, nq), "mean-wind start");
     CHECK(a->rm->r == b->rm->r && same_doubles(a->rm->A, b->rm->A, (size_t)a->rm->r * a->rm->n3) &&
           same_doubles(a->rm->obs_nl, b->rm->obs_nl, (size_t)a->rm->nobs * (a->rm->n2 + a->rm->n3 + 2 * a->rm->r)),

@@ -199,7 +199,7 @@ static void free_vibration_vs_full(gal_family fam, double swing)
     double T = 2 * GAL_PI / sqrt(rm->omega2[iv]);
     for (int large = 0; large < 2; large++) {
         double vel = (large ? swing : 1e-3) * sqrt(rm->omega2[iv]) * rm->eta_ref[iv] * 0.5; /* ~1 m swing */
-        gal_rdyn *rd = gal_rdyn_alloc(rm, eq.rod, eq.q, 0, 0, NULL, 32, 1e-9, T / 50, -1);
+        gal_rdyn *rd = gal_rdyn_alloc(rm, eq.rod, eq.q, NULL, NULL, 32, 1e-9, T / 50, -1);
         rd->y[r + iv] = vel;
         gal_dyn_opts dop;
         gal_dyn_default_opts(&dop);

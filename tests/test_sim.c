@@ -112,8 +112,10 @@ static void test_stable_section_decays(void)
 static void test_galloping_full_vs_reduced(void)
 {
     gal_scene sc;
-    const char *ov[] = {"model.elements=40"};
-    if (load(&sc, "data/scenes/iced_gallop.ini", ov, 1)) return;
+    /* 600 s: steady from ~300 s with the stated ratio at every mode (issue 15); at 500 s and 700 s
+     * the steady-part rule (issue 14: its envelope's last 2%) puts steady at 490 s and 686 s */
+    const char *ov[] = {"model.elements=40", "simulation.duration=600"};
+    if (load(&sc, "data/scenes/iced_gallop.ini", ov, 2)) return;
     gal_sim_setup s;
     CHECK(gal_sim_setup_init(&s, &sc, 1) == GAL_OK, "%s", gal_error_message());
     gal_sim_result f, r;

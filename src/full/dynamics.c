@@ -4,7 +4,9 @@
  *   a_m = (1-am) a1 + am a0,  v_f = (1-af) v1 + af v0,
  *   q1 = q0 + h v0 + h^2 ((1/2 - beta) a0 + beta a1),  v1 = v0 + h ((1-gamma) a0 + gamma a1).
  * Jacobian in q1: (1-am)/(beta h^2) M + (1-af) gamma/(beta h) C + (1-af) K(q1); the loads'
- * dependence on q and v is left out of it (it changes the convergence rate, not the solution). */
+ * dependence on q and v is left out of it, and so is a modal C (dense, of low rank; its term is
+ * 2 zeta w h gamma / (1-am) of the inertia's, below 1e-3 at the steps used): both change the
+ * convergence rate, not the solution. A Rayleigh C (sparse, the pattern of K) is kept in it. */
 #include "gallop/full/dynamics.h"
 #include "gallop/base/core.h"
 
@@ -19,8 +21,7 @@ void gal_dyn_default_opts(gal_dyn_opts *o)
 {
     o->h = 0.01;
     o->rho_inf = 1.0;
-    o->rayleigh_mass = 0;
-    o->rayleigh_stiffness = 0;
+    o->damping = NULL;
     o->newton_tol = 1e-8;
     o->max_newton = 20;
     o->max_halvings = 6;
@@ -30,7 +31,6 @@ gal_dyn *gal_dyn_free(gal_dyn *d)
 {
     if (d) {
         free(d->q); free(d->v); free(d->a); free(d->mdiag);
-        gal_csc_free(d->K0);
         gal_csc_free(d->S);
         gal_chol_free(d->chol);
         free(d->q1); free(d->v1); free(d->a1); free(d->fint0); free(d->fint1); free(d->fext0);
@@ -40,19 +40,11 @@ gal_dyn *gal_dyn_free(gal_dyn *d)
     return NULL;
 }
 
-/* Structural damping, C v = alpha M v + beta K0 v over the free dofs (v free-dof-sized; d->tmp is
- * scratch): the one place where the Rayleigh definition is evaluated. */
+/* Structural damping Cv = C v over the free dofs (v free-dof-sized). */
 static void damping_force(gal_dyn *d, const double *v, double *Cv)
 {
-    const gal_rod *rod = d->rod;
-    int n = rod->ndof;
-    if (d->o.rayleigh_mass == 0 && d->o.rayleigh_stiffness == 0) {
-        memset(Cv, 0, (size_t)n * sizeof(double));
-        return;
-    }
-    gal_csc_symv(d->K0, v, Cv);
-    gal_rod_mass_mult(rod, v, d->tmp);
-    for (int j = 0; j < n; j++) Cv[j] = d->o.rayleigh_stiffness * Cv[j] + d->o.rayleigh_mass * d->tmp[j];
+    memset(Cv, 0, (size_t)d->rod->ndof * sizeof(double));
+    if (d->o.damping) gal_damping_apply(d->o.damping, v, Cv);
 }
 
 static int external(gal_dyn *d, double t, const double *q, const double *v, double *f)
@@ -87,10 +79,9 @@ gal_dyn *gal_dyn_alloc(const gal_rod *rod, const double *q0, const double *v0, c
     d->q1 = malloc(bq), d->v1 = calloc(nq, sizeof(double)), d->a1 = calloc(nq, sizeof(double)); /* fixed dofs stay 0 */
     d->fint0 = malloc(bq), d->fint1 = malloc(bq), d->fext0 = malloc(bq), d->fext1 = malloc(bq);
     d->mdiag = malloc(bn), d->r = malloc(bn), d->dq = malloc(bn), d->tmp = malloc(bn), d->Cv = malloc(bn);
-    d->K0 = gal_csc_clone(rod->K);
     d->S = gal_csc_clone(rod->K);
     if (!d->q || !d->v || !d->a || !d->q1 || !d->v1 || !d->a1 || !d->fint0 || !d->fint1 || !d->fext0 ||
-        !d->fext1 || !d->mdiag || !d->r || !d->dq || !d->tmp || !d->Cv || !d->K0 || !d->S) {
+        !d->fext1 || !d->mdiag || !d->r || !d->dq || !d->tmp || !d->Cv || !d->S) {
         gal_error(GAL_ENOMEM, "dynamics: out of memory");
         return gal_dyn_free(d);
     }
@@ -101,7 +92,11 @@ gal_dyn *gal_dyn_alloc(const gal_rod *rod, const double *q0, const double *v0, c
     for (int k = 0; k < nq; k++)
         if (rod->dof[k] < 0) d->v[k] = 0;
     gal_rod_mass_diag(rod, d->mdiag);
-    if (gal_rod_eval(rod, q0, NULL, d->fint0, d->K0) != GAL_OK) return gal_dyn_free(d);
+    if (d->o.damping && d->o.damping->ndof != n) {
+        gal_error(GAL_EINPUT, "dynamics: the damping has %d dofs, the rod %d", d->o.damping->ndof, n);
+        return gal_dyn_free(d);
+    }
+    if (gal_rod_eval(rod, q0, NULL, d->fint0, NULL) != GAL_OK) return gal_dyn_free(d);
     if (external(d, 0.0, d->q, d->v, d->fext0) != GAL_OK) return gal_dyn_free(d);
     /* M a0 = F0 - g(q0) - C v0 */
     gal_rod_gather(rod, d->v, d->dq);
@@ -224,6 +219,20 @@ static void accept(gal_dyn *d, double t1)
     d->t = t1;
 }
 
+/* S = cm M + cc C + (1-af) K(q1) with K(q1) in S on entry (C: Rayleigh only, see the top). */
+static void iteration_matrix(gal_dyn *d, double cm, double cc)
+{
+    const gal_damping *c = d->o.damping;
+    double ca = 0, cb = 0, af = d->af;
+    const double *k0 = NULL, *mv = d->rod->M->val;
+    if (c && c->kind == GAL_DAMPING_RAYLEIGH) ca = cc * c->alpha, cb = cc * c->beta, k0 = c->K0->val;
+    double *sv = d->S->val;
+    if (k0)
+        for (int p = 0; p < d->S->nnz; p++) sv[p] = (1 - af) * sv[p] + cb * k0[p] + (cm + ca) * mv[p];
+    else
+        for (int p = 0; p < d->S->nnz; p++) sv[p] = (1 - af) * sv[p] + cm * mv[p];
+}
+
 /* One step of size h from the current state; on failure the state is unchanged. */
 static int try_step(gal_dyn *d, double h)
 {
@@ -245,10 +254,7 @@ static int try_step(gal_dyn *d, double h)
             accept(d, t1);
             return GAL_OK;
         }
-        /* S = cm M + cc C + (1-af) K(q1) */
-        for (int p = 0; p < d->S->nnz; p++)
-            d->S->val[p] = (1 - af) * d->S->val[p] + cc * d->o.rayleigh_stiffness * d->K0->val[p] +
-                           (cm + cc * d->o.rayleigh_mass) * rod->M->val[p];
+        iteration_matrix(d, cm, cc);
         d->factorizations++;
         if ((st = gal_chol_factor(d->chol, d->S, 0, NULL)))
             return gal_error(GAL_EFAIL, "dynamics: the iteration matrix is not positive definite at t = %.6g s", t1);

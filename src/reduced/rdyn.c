@@ -70,9 +70,11 @@ static int rhs(double t, const double y[], double dydt[], void *params)
                 d->fl[i] += d->wq[q] * (P[3 * i] * f[0] + P[3 * i + 1] * f[1] + P[3 * i + 2] * f[2] + Pt[i] * m);
         }
     }
+    for (int j = 0; j < r; j++)
+        for (int i = 0; i < r; i++) d->fl[i] -= d->damp[(size_t)j * r + i] * deta[j];
     for (int i = 0; i < r; i++) {
         dydt[i] = deta[i];
-        dydt[r + i] = d->fl[i] - d->damp[i] * deta[i] - d->fr[i];
+        dydt[r + i] = d->fl[i] - d->fr[i];
         if (!isfinite(dydt[r + i])) {
             d->status = gal_error(GAL_EFAIL, "reduced model: the %s force of mode %d is not finite at t = %.6g s",
                                   !isfinite(d->fl[i]) ? "aerodynamic" : "restoring", i + 1, t);
@@ -112,7 +114,7 @@ static int alloc_arrays(gal_rdyn *d, const gal_reduced *rm, int nqp, int obs_off
     d->phr = calloc((size_t)nqp * r * 3, sizeof(double));
     d->phs = calloc((size_t)nqp * r * 3, sizeof(double));
     d->pht = calloc((size_t)nqp * r, sizeof(double));
-    d->damp = malloc((size_t)r * sizeof(double));
+    d->damp = calloc((size_t)r * r, sizeof(double));
     d->y = calloc((size_t)2 * r, sizeof(double));
     d->y_prev = calloc((size_t)2 * r, sizeof(double));
     d->fr = malloc((size_t)r * sizeof(double));
@@ -190,8 +192,8 @@ static int driver(gal_rdyn *d, double h0)
     return GAL_OK;
 }
 
-gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, double ra,
-                         double rb, const gal_pointload *load, int nqp, double tol, double h0, int obs_offset)
+gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, const gal_damping *damping,
+                         const gal_pointload *load, int nqp, double tol, double h0, int obs_offset)
 {
     gal_rdyn *d = calloc(1, sizeof *d);
     if (!d) return NULL;
@@ -204,8 +206,11 @@ gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double
         gal_error(GAL_ENOMEM, "reduced model: out of memory");
         return gal_rdyn_free(d);
     }
+    if (damping && gal_damping_project(damping, rm->phi, r, d->damp)) {
+        free(full);
+        return gal_rdyn_free(d);
+    }
     for (int i = 0; i < r; i++) {
-        d->damp[i] = ra + rb * rm->omega2[i];
         for (int j = 0; j < n; j++) full[(size_t)i * rod->nq + rod->free_q[j]] = rm->phi[(size_t)i * n + j];
     }
     quadrature_tables(d, rod, q_eq, full);

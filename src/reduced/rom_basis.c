@@ -165,8 +165,8 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     if (m->o.derivatives && derivatives(m, MV, nsel)) goto fail;
     gal_rom_project_tangent(m, m->K0, m->K0r, c);
     int r = m->r;
-    for (int i = 0; i < r; i++)
-        for (int j = 0; j < r; j++) m->Cr[i * r + j] = m->o.rayleigh_stiffness * m->K0r[i * r + j] + (i == j) * m->o.rayleigh_mass;
+    memset(m->Cr, 0, (size_t)r * r * sizeof(double));
+    if (m->o.damping && gal_damping_project(m->o.damping, m->V, r, m->Cr)) goto fail; /* symmetric */
     double rho = m->o.rho_inf;
     m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
     m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);

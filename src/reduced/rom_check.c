@@ -65,9 +65,7 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
         vf[d] = sv, af[d] = sa;
     }
     gal_rod_mass_mult(rod, af, y[TERM_MA]);
-    gal_rod_mass_mult(rod, vf, y[TERM_CV]);
-    gal_csc_symv(m->K0, vf, y[TERM_G]); /* scratch */
-    for (int d = 0; d < n; d++) y[TERM_CV][d] = m->o.rayleigh_mass * y[TERM_CV][d] + m->o.rayleigh_stiffness * y[TERM_G][d];
+    if (m->o.damping) gal_damping_apply(m->o.damping, vf, y[TERM_CV]); /* y is zeroed */
     gal_rom_reconstruct(m, NULL, NULL); /* into m->q, m->vq */
     if ((st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL))) goto done;
     memset(m->fq, 0, (size_t)m->nq * sizeof(double));

@@ -83,8 +83,7 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     ro.derivatives = o->derivatives;
     ro.h = dt_out / sub;
     ro.rho_inf = sc->simulation.rho_inf;
-    /* the structural damping the pipeline fitted to the selected modes */
-    ro.rayleigh_mass = d->rayleigh_mass, ro.rayleigh_stiffness = d->rayleigh_stiffness;
+    ro.damping = d->damping; /* the structural damping of the pipeline */
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */
     gal_rom *m = gal_rom_alloc(rod, d->eq.q, md, sel, r, &ro, &F);

@@ -28,6 +28,7 @@ gal_data *gal_data_free(gal_data *d)
     if (d) {
         gal_equilibrium_clear(&d->eq);
         gal_modes_clear(&d->md);
+        gal_damping_free(d->damping);
         free(d->wind_u);
         free(d->q_start);
         gal_reduced_free(d->rm);
@@ -47,7 +48,7 @@ static int stage_equilibrium(const gal_model *m, gal_data *d)
     return GAL_OK;
 }
 
-/* ---- modes, and the damping fitted to them ---- */
+/* ---- modes, and the structural damping ---- */
 
 static int stage_modes(const gal_model *m, gal_data *d)
 {
@@ -58,14 +59,11 @@ static int stage_modes(const gal_model *m, gal_data *d)
                          "modes_horizontal, modes_torsional (torsional with torsion on)", m->sc.path);
     int st = gal_modes_find(d->eq.rod, d->eq.q, want, m->max_modes, &d->md);
     if (st) return gal_error(st, "%s: %s", m->sc.path, gal_error_message());
-    double wmin = INFINITY, wmax = 0;
-    for (int k = 0; k < d->md.n; k++)
-        if (d->md.mode[k].selected) {
-            if (d->md.mode[k].omega > 0) wmin = fmin(wmin, d->md.mode[k].omega);
-            wmax = fmax(wmax, d->md.mode[k].omega);
-        }
-    /* today's damping: Rayleigh, fitted to the ratio at the lowest and highest selected modes */
-    gal_damping_rayleigh_fit(m->damping_ratio, wmin, wmax, &d->rayleigh_mass, &d->rayleigh_stiffness);
+    /* the damping is the structure's: the stated ratio at every mode of the band, whichever
+     * modes the scene selects */
+    d->damping = gal_damping_free(d->damping);
+    d->damping = gal_damping_modal_alloc(d->eq.rod, d->eq.q, m->damping_ratio, GAL_DAMPING_BAND_HZ);
+    if (!d->damping) return gal_error(GAL_EFAIL, "%s: %s", m->sc.path, gal_error_message());
     return GAL_OK;
 }
 

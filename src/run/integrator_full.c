@@ -48,7 +48,7 @@ static int full_alloc(const gal_model *m, const gal_data *d, const gal_run_opts 
     int sub = (int)ceil(dt_out / h - 1e-9);
     go.h = dt_out / sub;
     go.rho_inf = o->rho_inf;
-    go.rayleigh_mass = d->rayleigh_mass, go.rayleigh_stiffness = d->rayleigh_stiffness;
+    go.damping = d->damping;
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */
     s->dyn = gal_dyn_alloc(rod, d->q_start, NULL, &go, &F);

@@ -62,8 +62,7 @@ static int reduced_alloc(const gal_model *m, const gal_data *d, const gal_run_op
     s->rm = d->rm, s->d = d, s->np = m->nprobe, s->duration = o->duration;
     gal_pointload pl = {0};
     if (d->loads.table) pl.eval = gal_loads_point, pl.ctx = (void *)&d->loads; /* read only */
-    s->dyn = gal_rdyn_alloc(d->rm, rod, d->eq.q, d->rayleigh_mass, d->rayleigh_stiffness, &pl, NQP, o->tolerance,
-                            dt_out / 4, -1);
+    s->dyn = gal_rdyn_alloc(d->rm, rod, d->eq.q, d->damping, &pl, NQP, o->tolerance, dt_out / 4, -1);
     if (s->dyn && m->start_mean_wind) project_start(d, s->dyn->y);
     s->ys = malloc((size_t)2 * d->rm->r * sizeof(double));
     s->ov = malloc((size_t)d->rm->nobs * sizeof(double));

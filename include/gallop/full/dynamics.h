@@ -2,12 +2,13 @@
  *   M a + C v + grad U(q) = F(t, q, v),
  * integrated by the generalized-alpha method (Chung & Hulbert 1993) with Newton's method at each
  * step on the sparse tangent (CHOLMOD: symbolic analysis once, numeric factorization per Newton
- * iteration). M is the lumped mass; C = alpha M + beta K0 is Rayleigh damping with K0 the tangent
- * at the equilibrium (the same definition the reduced model projects); F holds the external
- * loads (aerodynamics), given by a callback. rho_inf = 1 gives no numerical dissipation. */
+ * iteration). M is the lumped mass; C the structural damping (model/damping.h: the one object the
+ * reduced model projects and the stability analysis linearizes with); F holds the external loads
+ * (aerodynamics), given by a callback. rho_inf = 1 gives no numerical dissipation. */
 #ifndef GALLOP_DYNAMICS_H
 #define GALLOP_DYNAMICS_H
 
+#include "gallop/model/damping.h"
 #include "gallop/model/force.h"
 #include "gallop/rod/rod.h"
 
@@ -18,8 +19,7 @@ extern "C" {
 typedef struct gal_dyn_opts {
     double h;            /* s, time step */
     double rho_inf;      /* spectral radius at infinite frequency, [0, 1]; 1: no dissipation */
-    double rayleigh_mass;     /* 1/s, alpha of C = alpha M + beta K0 */
-    double rayleigh_stiffness;/* s, beta */
+    const gal_damping *damping; /* the structural damping C (not owned; NULL: none) */
     double newton_tol;   /* relative residual; default 1e-8 */
     int max_newton;      /* per step; default 20 */
     int max_halvings;    /* step halvings on a failed step before giving up; default 6 */
@@ -33,7 +33,6 @@ typedef struct gal_dyn {
     double *q;                  /* nq: configuration */
     double *v, *a;              /* nq: velocity and acceleration (zero at fixed dofs) */
     double *mdiag;              /* ndof */
-    gal_csc *K0;                /* tangent at the start (for Rayleigh damping) */
     gal_csc *S;                 /* iteration matrix */
     void *chol;
     gal_force force;

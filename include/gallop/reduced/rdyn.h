@@ -1,7 +1,7 @@
 /* rdyn.h: time integration of the reduced model (issue 6):
- *   eta'' + (alpha + beta w^2) eta' + f(eta) = sum_q w_q [Phi(s_q)^T f_q + Phi_theta(s_q) m_q]
- * with f the identified restoring force (reduced.h), Rayleigh damping projected exactly
- * (Phi^T (alpha M + beta K0) Phi = alpha I + beta diag(w^2)), and the distributed loads evaluated at
+ *   eta'' + Phi^T C Phi eta' + f(eta) = sum_q w_q [Phi(s_q)^T f_q + Phi_theta(s_q) m_q]
+ * with f the identified restoring force (reduced.h), the structural damping C (model/damping.h)
+ * projected exactly on the basis (the modal band's: 2 zeta w on the diagonal), and the distributed loads evaluated at
  * a fixed number of quadrature points along the span from the mode shapes, so that the cost of a
  * step does not depend on the number of elements. GSL odeiv2 (Runge-Kutta-Prince-Dormand 8(9)),
  * adaptive, with a relative tolerance. */
@@ -10,6 +10,7 @@
 
 #include <gsl/gsl_odeiv2.h>
 
+#include "gallop/model/damping.h"
 #include "gallop/model/force.h"
 #include "gallop/reduced/reduced.h"
 #include "gallop/rod/rod.h"
@@ -27,7 +28,7 @@ typedef struct gal_rdyn {
     double *phr;         /* nqp x r x 3: mode shapes (translation) at the points */
     double *phs;         /* nqp x r x 3: their derivative along s */
     double *pht;         /* nqp x r: twist */
-    double *damp;        /* r: alpha + beta w^2 */
+    double *damp;        /* r x r: Phi^T C Phi (column-major) */
     double *nt;          /* nqp: |dr/ds| at equilibrium */
     int obs_offset;      /* >= 0: kinematics at the points from the model's expansion (7 observations
                           * per point from this index on); -1: linear in the modes */
@@ -45,9 +46,9 @@ typedef struct gal_rdyn {
     double tol;
 } gal_rdyn;
 
-gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, double rayleigh_mass,
-                         double rayleigh_stiffness, const gal_pointload *load, int nqp, double rel_tol,
-                         double h0, int obs_offset);
+/* damping: the structural damping (NULL: none), projected on the model's modes here. */
+gal_rdyn *gal_rdyn_alloc(const gal_reduced *rm, const gal_rod *rod, const double *q_eq, const gal_damping *damping,
+                         const gal_pointload *load, int nqp, double rel_tol, double h0, int obs_offset);
 /* The observations at the nqp quadrature points that gal_rdyn uses when obs_offset >= 0: per
  * point its displacement (3), slope d u / ds (3) and twist (1), 7 nqp in all. */
 void gal_rdyn_quadrature_obs(const gal_rod *rod, int nqp, gal_obs *obs);

@@ -33,8 +33,7 @@ typedef struct gal_rom_opts {
     double fd_step_m;       /* m: largest translation of the finite-difference steps; default 1e-3 */
     double h;               /* s: time step; default 0.01 */
     double rho_inf;         /* generalized-alpha spectral radius at infinite frequency; default 1 */
-    double rayleigh_mass;   /* 1/s: alpha of the full model's C = alpha M + beta K0 */
-    double rayleigh_stiffness; /* s: beta */
+    const gal_damping *damping; /* the full model's structural damping C (not owned; NULL: none) */
     double newton_tol;      /* relative; default 1e-8 */
     int max_newton;         /* per step; default 20 */
 } gal_rom_opts;

@@ -2,8 +2,9 @@
  * a const model (model/model.h), each writing what it finds into a gal_data, up to the stage a
  * caller asks for:
  *   equilibrium  statics: the sagged equilibrium, the unstretched length it solves for (statics.h)
- *   modes        the modes about it, those the scene selects marked (modes.h), and the Rayleigh
- *                coefficients of the structural damping fitted to them
+ *   modes        the modes about it, those the scene selects marked (modes.h), and the structural
+ *                damping (model/damping.h: modal over the band, built from the span's own modes up
+ *                to GAL_DAMPING_BAND_HZ, independent of the modes selected)
  *   wind         the loads on the equilibrium rod, with the turbulent wind field when there is one
  *   start        the start of a run: the equilibrium, or the equilibrium under the mean wind
  *   reduced      the reduced model on the selected modes, observing the probes (reduced.h)
@@ -13,6 +14,7 @@
 #define GALLOP_FORWARD_H
 
 #include "gallop/loads/loads.h"
+#include "gallop/model/damping.h"
 #include "gallop/model/model.h"
 #include "gallop/modes/modes.h"
 #include "gallop/reduced/reduced.h"
@@ -46,8 +48,8 @@ typedef struct gal_data {
     gal_equilibrium eq;
     /* modes */
     gal_modes md;
-    double rayleigh_mass;    /* 1/s, a of C = a M + b K0 */
-    double rayleigh_stiffness; /* s, b */
+    gal_damping *damping;    /* owned: the structural damping both integrators and the stability
+                              * analysis apply */
     /* wind: the model's loads on eq.rod, with the turbulent field (owned, nt x nx) or none */
     gal_loads loads;
     double *wind_u;
