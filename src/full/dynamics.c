@@ -163,8 +163,9 @@ static double force_tolerance(const gal_dyn *d, double h)
 }
 
 /* The residual R at the iterate q1 of a step of size h into d->r (a1, v1, the elastic forces
- * fint1 and the tangent in d->S, the loads fext1 evaluated on the way); its max norm in *rn. */
-static int residual(gal_dyn *d, double h, double t1, double *rn)
+ * fint1, the loads fext1 and, when K is not NULL, the tangent into K evaluated on the way); its
+ * max norm in *rn. */
+static int residual(gal_dyn *d, double h, double t1, gal_csc *K, double *rn)
 {
     const gal_rod *rod = d->rod;
     int n = rod->ndof, st;
@@ -175,7 +176,7 @@ static int residual(gal_dyn *d, double h, double t1, double *rn)
         d->a1[k] = (d->q1[k] - d->q[k] - h * d->v[k]) / (be * h * h) - (0.5 - be) / be * d->a[k];
         d->v1[k] = d->v[k] + h * ((1 - ga) * d->a[k] + ga * d->a1[k]);
     }
-    if ((st = gal_rod_eval(rod, d->q1, NULL, d->fint1, d->S))) return st;
+    if ((st = gal_rod_eval(rod, d->q1, NULL, d->fint1, K))) return st;
     if ((st = external(d, t1, d->q1, d->v1, d->fext1))) return st;
     /* v_f = (1-af) v1 + af v0 over the free dofs (dq is scratch until the solve), and C v_f */
     for (int j = 0; j < n; j++) {
@@ -238,19 +239,33 @@ static void iteration_matrix(gal_dyn *d, double cm, double cc)
         for (int p = 0; p < d->S->nnz; p++) sv[p] = (1 - af) * sv[p] + cm * mv[p];
 }
 
-/* One step of size h from the current state; on failure the state is unchanged. */
+/* Factor the iteration matrix at the iterate whose tangent is in d->S, for steps of size h. */
+static int refactor(gal_dyn *d, double h, double t1)
+{
+    double cm = (1 - d->am) / (d->beta * h * h), cc = (1 - d->af) * d->gamma / (d->beta * h);
+    iteration_matrix(d, cm, cc);
+    d->factorizations++;
+    d->factor_h = 0;
+    if (gal_chol_factor(d->chol, d->S, 0, NULL))
+        return gal_error(GAL_EFAIL, "dynamics: the iteration matrix is not positive definite at t = %.6g s", t1);
+    d->factor_h = h;
+    return GAL_OK;
+}
+
+/* One step of size h from the current state; on failure the state is unchanged. Modified Newton:
+ * the factorization of an earlier iterate (or step) is kept while the residual falls by at least
+ * GAL_DYN_RATE per iteration; when it falls slower, the tangent is evaluated at the iterate and
+ * factored again (and always when h changes). */
 static int try_step(gal_dyn *d, double h)
 {
     const gal_rod *rod = d->rod;
     int n = rod->ndof, st;
-    double am = d->am, af = d->af, be = d->beta, ga = d->gamma;
-    double t1 = d->t + h;
+    double t1 = d->t + h, tol = force_tolerance(d, h), rprev = INFINITY;
     predict(d, h);
-    double cm = (1 - am) / (be * h * h), cc = (1 - af) * ga / (be * h);
-    double tol = force_tolerance(d, h);
     for (int it = 0; it < d->o.max_newton; it++) {
         double rn;
-        if ((st = residual(d, h, t1, &rn))) return st;
+        int fresh = d->factor_h != h; /* no factorization for this h: the tangent here */
+        if ((st = residual(d, h, t1, fresh ? d->S : NULL, &rn))) return st;
         if (!isfinite(rn))
             return gal_error(GAL_EFAIL, "dynamics: the residual is not finite at t = %.6g s (step %ld, "
                              "Newton iteration %d): the %s", t1, d->steps + 1, it, bad_term(d));
@@ -259,10 +274,12 @@ static int try_step(gal_dyn *d, double h)
             accept(d, t1);
             return GAL_OK;
         }
-        iteration_matrix(d, cm, cc);
-        d->factorizations++;
-        if ((st = gal_chol_factor(d->chol, d->S, 0, NULL)))
-            return gal_error(GAL_EFAIL, "dynamics: the iteration matrix is not positive definite at t = %.6g s", t1);
+        if (!fresh && rn > GAL_DYN_RATE * rprev) { /* converging slowly: the tangent at this iterate */
+            if ((st = gal_rod_eval(rod, d->q1, NULL, NULL, d->S))) return st;
+            fresh = 1;
+        }
+        if (fresh && (st = refactor(d, h, t1))) return st;
+        rprev = rn;
         if ((st = gal_chol_solve(d->chol, d->r, d->dq))) return st;
         for (int j = 0; j < n; j++) d->q1[rod->free_q[j]] -= d->dq[j];
     }

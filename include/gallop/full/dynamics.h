@@ -1,8 +1,8 @@
 /* dynamics.h: the full nonlinear equations of motion of the discretized rod (paper Eq. 9),
  *   M a + C v + grad U(q) = F(t, q, v),
- * integrated by the generalized-alpha method (Chung & Hulbert 1993) with Newton's method at each
- * step on the sparse tangent (CHOLMOD: symbolic analysis once, numeric factorization per Newton
- * iteration). M is the lumped mass; C the structural damping (model/damping.h: the one object the
+ * integrated by the generalized-alpha method (Chung & Hulbert 1993) with modified Newton at each
+ * step on the sparse tangent (CHOLMOD: symbolic analysis once, a numeric factorization kept while
+ * it converges fast, see GAL_DYN_RATE). M is the lumped mass; C the structural damping (model/damping.h: the one object the
  * reduced model projects and the stability analysis linearizes with); F holds the external loads
  * (aerodynamics), given by a callback. rho_inf = 1 gives no numerical dissipation. */
 #ifndef GALLOP_DYNAMICS_H
@@ -15,6 +15,10 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* Modified Newton: the factorization is kept while each iteration divides the residual by
+ * 1/GAL_DYN_RATE at least. */
+#define GAL_DYN_RATE 0.1
 
 typedef struct gal_dyn_opts {
     double h;            /* s, time step */
@@ -34,7 +38,8 @@ typedef struct gal_dyn {
     double *v, *a;              /* nq: velocity and acceleration (zero at fixed dofs) */
     double *mdiag;              /* ndof */
     gal_csc *S;                 /* iteration matrix */
-    void *chol;
+    void *chol;                 /* its factorization, kept over iterations and steps */
+    double factor_h;            /* s: the step size it was made for (0: none) */
     gal_force force;
     /* workspace */
     double *q1, *v1, *a1, *fint0, *fint1, *fext0, *fext1, *r, *dq, *tmp, *Cv;

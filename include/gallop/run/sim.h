@@ -52,7 +52,7 @@ typedef struct gal_sim_setup {
     double setup_time_s;           /* model and pipeline to the start */
 } gal_sim_setup;
 
-/* need_modes is ignored: the modes are always found (the damping is fitted to them). */
+/* need_modes is ignored: the modes are always found (the damping is built at the modes stage). */
 int gal_sim_setup_init(gal_sim_setup *s, const gal_scene *sc, int need_modes);
 void gal_sim_setup_clear(gal_sim_setup *s);
 int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res);
