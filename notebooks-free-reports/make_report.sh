@@ -12,7 +12,7 @@
 #                      their full build-up)                            (scene)
 #   REPORT_GJ_FACTORS  factors on the scene's torsional stiffness GJ  ("0.5 1 2 4")
 #   REPORT_ACCURACY_DURATION  simulated time (s) of the accuracy study's runs (300)
-#   REPORT_STEPS       steps to run, of: modes full reduced compare accuracy torsion (all)
+#   REPORT_STEPS       steps to run, of: modes stability full reduced compare accuracy torsion (all)
 #   REPORT_TIMEOUT     seconds allowed to each gallop run              (900)
 #   REPORT_PSD_FMAX, REPORT_TERMINAL: see plot_scene.sh and README.md
 # Exit status: 0 every report written and every run succeeded, 1 a run or a figure failed (the
@@ -50,7 +50,7 @@ done
 outroot=${REPORT_OUT:-out/report}
 duration=${REPORT_DURATION-scene}
 factors=${REPORT_GJ_FACTORS:-0.5 1 2 4}
-steps=" ${REPORT_STEPS:-modes full reduced compare accuracy torsion} "
+steps=" ${REPORT_STEPS:-modes stability full reduced compare accuracy torsion} "
 tmo=${REPORT_TIMEOUT:-900}
 sets=()
 for kv in ${REPORT_SET:-}; do sets+=(--set "$kv"); done
@@ -139,6 +139,12 @@ for scene in "${scenes[@]}"; do
     if want modes; then
         if has modes; then run modes modes "$bin" modes "$scene" "${sets[@]}" -o "$d/modes"
         else skip modes "equilibrium and modes"; fi
+    fi
+    # the galloping onset of the coupled system: scenes with an iced section's aerodynamic table
+    if want stability; then
+        if ! has stability; then skip stability "the galloping onset"
+        elif grep -q '^aero_table = ' "$d/scene.ini"; then run stability stability "$bin" stability "$scene" "${sets[@]}" -o "$d/stability"
+        else note "No [ice] aero_table in this scene: no galloping onset to analyse (\`gallop stability\` left out)."; fi
     fi
     for model in full reduced; do
         want "$model" || continue

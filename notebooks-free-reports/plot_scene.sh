@@ -486,6 +486,62 @@ EOF
     fi
 fi
 
+# ======================================================================================
+# Galloping onset of the coupled aeroelastic system (gallop stability, issue 15)
+g=$dir/stability
+if has_rows "$g/vg.csv"; then
+    s=$g/summary.json
+    out "## Galloping onset: the coupled aeroelastic system" ""
+    out "About the equilibrium under each mean wind speed, with the structural damping the dynamic models apply (\`gallop stability\`, files in \`stability/\`)." ""
+    out "| quantity | value |" "|---|---|"
+    out "| onset wind speed | $(num %.4g "$(jfind "$s" onset_speed_m_s)") m/s (range studied up to $(num %.4g "$(jfind "$s" speed_max_m_s)") m/s) |"
+    out "| mode losing stability | $(num %d "$(jfind "$s" index onset_mode)"), $(num %.4g "$(jfind "$s" onset_frequency_hz)") Hz; shares vertical $(num %.3f "$(jfind "$s" share_vertical onset_mode)"), horizontal $(num %.3f "$(jfind "$s" share_horizontal onset_mode)"), torsional $(num %.3f "$(jfind "$s" share_torsional onset_mode)") |"
+    out "| torsional divergence | $(num %.4g "$(jfind "$s" divergence_speed_m_s)") m/s |"
+    out "| fold of the mean-wind equilibrium | $(num %.4g "$(jfind "$s" fold_speed_m_s)") m/s |"
+    out "| Den Hartog, first vertical mode, at rest | $(num %.4g "$(jfind "$s" onset_speed_at_rest_m_s)") m/s |" ""
+    # speed, f_k and zeta_k of each followed mode, swing, twist; "nan" where empty
+    awk -F, '/^#/ { next } !h++ { for (i = 1; i <= NF; i++) { if ($i ~ /^f[0-9]+_hz$/) fc[++nf] = i; if ($i ~ /^zeta[0-9]+$/) zc[++nz] = i; if ($i == "swing_deg") sw = i; if ($i == "twist_deg") tw = i } next }
+        { line = $1; for (k = 1; k <= nf; k++) line = line " " ($fc[k] == "" ? "nan" : $fc[k]);
+          for (k = 1; k <= nz; k++) line = line " " ($zc[k] == "" ? "nan" : $zc[k]);
+          print line, ($sw == "" ? "nan" : $sw), ($tw == "" ? "nan" : $tw) }
+        END { print nf > "/dev/stderr" }' "$g/vg.csv" > "$dat/vg.dat" 2> "$dat/vg.n"
+    nm=$(cat "$dat/vg.n")
+    uc=$(jfind "$s" onset_speed_m_s)
+    mark=""
+    [ -n "$uc" ] && mark="set arrow from $uc, graph 0 to $uc, graph 1 nohead dt 2 lw 2 lc rgb \"red\"
+set label \"onset $(num %.3g "$uc") m/s\" at $uc, graph 0.05 left offset 0.5,0 tc rgb \"red\""
+    vg="" vf=""
+    for k in $(seq 1 "$nm"); do
+        vg="$vg\"$dat/vg.dat\" using 1:(100*\$$((1 + nm + k))) with linespoints pt 7 ps 0.5 lw 2 title \"mode $k\", "
+        vf="$vf\"$dat/vg.dat\" using 1:$((1 + k)) with linespoints pt 7 ps 0.5 lw 2 title \"mode $k\", "
+    done
+    plot vg_diagram "V-g diagram: damping ratio of each followed aeroelastic mode against the mean wind speed (below 0: galloping)" 1000x600 <<EOF
+set title "V-g diagram, $gtitle"
+set xlabel "mean wind speed (m/s)"
+set ylabel "damping ratio (%)"
+set key outside right top
+$mark
+set arrow from graph 0, first 0 to graph 1, first 0 nohead lw 1 lc rgb "black"
+plot ${vg%, }
+EOF
+    plot vf_diagram "V-f diagram: frequency of each followed aeroelastic mode against the mean wind speed" 1000x600 <<EOF
+set title "V-f diagram, $gtitle"
+set xlabel "mean wind speed (m/s)"
+set ylabel "frequency (Hz)"
+set key outside right top
+$mark
+plot ${vf%, }
+EOF
+    plot mean_wind_equilibrium "Mean-wind equilibrium at mid-span: swing angle and twist against the wind speed" 1000x500 <<EOF
+set title "Mean-wind equilibrium at mid-span, $gtitle"
+set xlabel "mean wind speed (m/s)"
+set ylabel "angle (deg)"
+set key top left
+plot "$dat/vg.dat" using 1:$((2 + 2 * nm)) with linespoints pt 7 ps 0.5 lw 2 title "swing", \
+     "" using 1:$((3 + 2 * nm)) with linespoints pt 7 ps 0.5 lw 2 title "twist"
+EOF
+fi
+
 mv "$md" "$dir/report.md"
 [ $failed = 0 ] || echo "plot_scene.sh: some figures failed, see $fig/gnuplot.log" >&2
 exit $failed

@@ -2,7 +2,7 @@
 # test_cli_stability.sh: `gallop stability` end to end on a copy of the iced scene: exit 0 and the
 # two files, H = dC_L/dalpha + C_D on every row, the onset speed -4 m zeta w / (rho d H) recomputed
 # from the scene's numbers and the mode's frequency, the unstable ranges against the H column, the
-# zero-damping case, the attack angle; a scene without an aero table: exit 2, nothing written.
+# zero-damping case, the attack angle; the coupled onset (vg.csv, issue 15); a scene without an aero table: exit 2, nothing written.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
 pass=0; fail=0
@@ -77,6 +77,39 @@ h19=$(awk -F, '$1 == 19 {print $6}' "$tmp/a/stability.csv")
 hr=$(grep '"den_hartog_at_rest"' "$tmp/a/summary.json" | sed 's/.*: *//; s/,//')
 awk -v a="$h19" -v b="$hr" 'BEGIN {e = a - b; if (e < 0) e = -e; exit !(e < 1e-8)}' && grep -q '"attack_angle_deg": 19,' "$tmp/a/summary.json" \
   && ok "attack angle 19 deg: den_hartog_at_rest = H(19 deg)" || bad "attack angle: $hr vs $h19"
+
+# the coupled onset (issue 15): vg.csv over [stability] speeds, the onset where the onset mode's
+# damping ratio changes sign, the structural ratio at zero wind, null when stable over the range
+vg="$tmp/s/vg.csv"
+[ -s "$vg" ] && ok "writes vg.csv" || bad "no vg.csv"
+for k in onset_speed_m_s onset_mode share_vertical share_horizontal share_torsional onset_frequency_hz \
+         divergence_speed_m_s fold_speed_m_s speed_max_m_s vg; do
+  grep -q "\"$k\"" "$js" || missing2="${missing2:-} $k"
+done
+[ -z "${missing2:-}" ] && ok "summary.json has the keys of issue 15" || bad "summary.json lacks$missing2"
+n=$(grep -v '^#' "$vg" | awk 'NR > 1' | wc -l)
+[ "$n" -eq 79 ] && ok "79 speeds from 0.5 to 20 m/s by 0.25" || bad "vg.csv rows: $n"
+uc=$(grep -m 1 '"onset_speed_m_s"' "$js" | sed 's/.*: *//; s/,//')
+idx=$(grep -A 1 '"onset_mode"' "$js" | grep '"index"' | sed 's/.*: *//; s/,//')
+if [ -n "$idx" ] && grep -v '^#' "$vg" | awk -F, -v u="$uc" -v k="$idx" '
+     NR == 1 { for (i = 1; i <= NF; i++) if ($i == "zeta" k) c = i; next }
+     $1 < u { below = $c } $1 > u && !done { above = $c; done = 1 }
+     END { exit !(c && below > 0 && above < 0) }'; then
+  ok "onset $uc m/s: the damping ratio of mode $idx changes sign there"
+else
+  bad "onset $uc m/s, mode $idx: no sign change in vg.csv"
+fi
+"$GALLOP" stability "$tmp/iced.ini" $tab --set conductor.damping_ratio=0.005 --set stability.speed_min=0 \
+  --set stability.speed_max=2 --set stability.speed_step=1 -o "$tmp/v" >/dev/null 2>&1
+grep -v '^#' "$tmp/v/vg.csv" | awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i ~ /^zeta[0-9]/) c[i] = 1; next }
+  $1 == 0 { for (i in c) { e = ($i - 0.005) / 0.005; if (e < 0) e = -e; if (e > 1e-6) bad++; n++ } }
+  END { exit !(n == 8 && bad == 0) }' \
+  && ok "zero wind: every followed mode has the scene's damping ratio" || bad "zero wind ratios: $(grep -v '^#' "$tmp/v/vg.csv" | sed -n 2p)"
+grep -q '"onset_speed_m_s": null' "$tmp/v/summary.json" && grep -q '"speed_max_m_s": 2' "$tmp/v/summary.json" \
+  && ok "stable over 0 to 2 m/s: onset null, speed_max_m_s 2" || bad "stable range: $(grep -E 'onset_speed|speed_max' "$tmp/v/summary.json")"
+"$GALLOP" stability "$tmp/iced.ini" $tab --set stability.speed_min=5 --set stability.speed_max=4 -o "$tmp/r" >/dev/null 2>"$tmp/err"
+rc=$?
+[ $rc -eq 2 ] && [ ! -e "$tmp/r" ] && ok "speed_max below speed_min: exit 2" || bad "speed range: exit $rc: $(cat "$tmp/err")"
 
 # no structural damping: onset 0 wherever H < 0
 "$GALLOP" stability "$tmp/iced.ini" $tab --set conductor.damping_ratio=0 -o "$tmp/z" >"$tmp/zout" 2>&1

@@ -250,7 +250,7 @@ static void conclude(gal_onset *out)
 
 /* The static solution at speed U from the previous one (w->q); the fold test against the last
  * change of the path. */
-static int static_at(work *w, gal_rod *rod, const double *q_eq, gal_loads *Ls, double tol, gal_onset_speed *sp,
+static int static_at(work *w, const gal_rod *rod, const double *q_eq, gal_loads *Ls, double tol, gal_onset_speed *sp,
                      double *last_jump)
 {
     memcpy(w->qprev, w->q, (size_t)w->nq * sizeof(double));
@@ -272,7 +272,7 @@ static int static_at(work *w, gal_rod *rod, const double *q_eq, gal_loads *Ls, d
     return GAL_OK;
 }
 
-int gal_onset_analyse(gal_rod *rod, const double *q_eq, const gal_loads *L, const gal_damping *C, double mass,
+int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L, const gal_damping *C, double mass,
                       const gal_onset_opts *o, gal_onset *out)
 {
     double t0 = gal_wall_time();

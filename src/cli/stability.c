@@ -1,8 +1,10 @@
-/* cli/stability.c: `gallop stability SCENE [-o DIR] [--set section.key=value]...` (issue 4): Den
- * Hartog's criterion H(alpha) = dC_L/dalpha + C_D over the angle of attack of the scene's iced
+/* cli/stability.c: `gallop stability SCENE [-o DIR] [--set section.key=value]...` (issues 4, 15):
+ * Den Hartog's criterion H(alpha) = dC_L/dalpha + C_D over the angle of attack of the scene's iced
  * section, and the onset wind speed U_c = -4 m zeta w / (rho d H) of each vertical mode of the
- * span where H < 0 (analysis/stability.h). stability.csv and summary.json in DIR, a table on
- * stdout (output/stabreport.h). */
+ * span where H < 0 (analysis/stability.h); then the onset of the coupled aeroelastic system about
+ * the mean-wind equilibrium over [stability] speed_min to speed_max, with the structural damping
+ * the dynamic models apply (analysis/onset.h). stability.csv, vg.csv and summary.json in DIR, a
+ * table on stdout (output/stabreport.h). */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -12,6 +14,7 @@
 #include "gallop/modes/modes.h"
 #include "gallop/run/forward.h"
 #include "gallop/scene/scene.h"
+#include "gallop/analysis/onset.h"
 #include "gallop/analysis/stability.h"
 #include "gallop/output/stabreport.h"
 
@@ -51,23 +54,51 @@ static int vertical_modes(stab *S)
     return st;
 }
 
+/* The coupled onset of the scene's span, with the pipeline's damping (the one the runs apply). */
+static int coupled_onset(const gal_scene *sc, gal_onset *O)
+{
+    int st;
+    gal_model *m = gal_model_alloc(sc, &st);
+    gal_data *d = m ? gal_data_alloc(m) : NULL;
+    if (m && !d) st = GAL_ENOMEM;
+    if (!st) st = gal_forward(m, d, GAL_STAGE_WIND);
+    if (!st) {
+        gal_onset_opts o;
+        gal_onset_default_opts(&o);
+        o.speed_min = sc->stability.speed_min, o.speed_max = sc->stability.speed_max;
+        o.speed_step = sc->stability.speed_step;
+        double mass = sc->conductor.mass_per_length + (sc->ice.present ? sc->ice.mass_per_length : 0);
+        st = gal_onset_analyse(d->eq.rod, d->eq.q, &d->loads, d->damping, mass, &o, O);
+    }
+    gal_data_free(d);
+    gal_model_free(m);
+    return st;
+}
+
 /* the sweep, the files and the table */
 static int run(const gal_scene *sc, const gal_aero_table *t, const char *outdir, double t0)
 {
     stab S = {sc, 0, {0}};
     int st = vertical_modes(&S);
     if (st) return st;
+    gal_onset O;
+    if ((st = coupled_onset(sc, &O))) return st;
     gal_stability_params p;
     gal_stability_scene_params(sc, &p);
     p.nmodes = S.nm;
     p.omega = S.omega;
     gal_stability *R = gal_stability_sweep(t, &p);
-    if (!R) return GAL_ENOMEM;
-    st = gal_stability_write(outdir, sc, R, gal_wall_time() - t0);
+    if (!R) {
+        gal_onset_clear(&O);
+        return GAL_ENOMEM;
+    }
+    st = gal_stability_write(outdir, sc, R, &O, gal_wall_time() - t0);
     if (!st) {
         gal_stability_print(stdout, sc, R);
-        printf("files: %s/{stability.csv,summary.json}\n", outdir);
+        gal_onset_print(stdout, &O);
+        printf("files: %s/{stability.csv,vg.csv,summary.json}\n", outdir);
     }
+    gal_onset_clear(&O);
     gal_stability_free(R);
     return st;
 }

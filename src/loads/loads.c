@@ -97,7 +97,7 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
     return GAL_OK;
 }
 
-int gal_loads_static(gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations)
+int gal_loads_static(const gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations)
 {
     /* Picard on the follower load: solve grad U(q) = F(q) with F frozen, update F, repeat. The
      * load is evaluated with the full mean wind (after the ramp) and no turbulence or motion. */

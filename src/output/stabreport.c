@@ -63,7 +63,7 @@ static void json_modes(const gal_stability *S, gal_json *j)
     gal_json_arr_end(j);
 }
 
-static int write_summary(const gal_stability *S, const gal_scene *sc, gal_outset *o, double wall)
+static int write_summary(const gal_stability *S, const gal_onset *O, const gal_scene *sc, gal_outset *o, double wall)
 {
     gal_json *j = gal_outset_summary(o);
     if (!j) return GAL_EIO;
@@ -83,17 +83,20 @@ static int write_summary(const gal_stability *S, const gal_scene *sc, gal_outset
     gal_json_kv_num(j, "diameter_m", S->p.diam);
     gal_json_key(j, "modes");
     json_modes(S, j);
+    if (O) gal_onset_write_json(O, j);
     gal_json_kv_num(j, "wall_time_s", wall);
     return GAL_OK;
 }
 
-int gal_stability_write(const char *dir, const gal_scene *sc, const gal_stability *S, double wall_time_s)
+int gal_stability_write(const char *dir, const gal_scene *sc, const gal_stability *S, const gal_onset *O,
+                        double wall_time_s)
 {
     gal_outset *o;
     int st = gal_outset_begin(&o, dir, "stability");
     if (!st) st = gal_outset_scene(o, sc);
     if (!st) st = write_csv(S, o);
-    if (!st) st = write_summary(S, sc, o, wall_time_s);
+    if (!st && O) st = gal_onset_write_csv(O, o);
+    if (!st) st = write_summary(S, O, sc, o, wall_time_s);
     if (!st) st = gal_outset_commit(o);
     gal_outset_free(o);
     return st;

@@ -19,7 +19,7 @@ const char *const scn_turb_names[] = {"none", "kaimal", "davenport", "von_karman
 const char *const scn_terrain_names[] = {"0", "I", "II", "III", "IV", NULL};
 const char *const scn_onoff_names[] = {"off", "on", NULL};
 static const char *const sections[] = {"span", "stringing", "conductor", "ice", "wind",
-                                       "effects", "model", "simulation", "output", NULL};
+                                       "effects", "model", "simulation", "stability", "output", NULL};
 
 #define OFF(m) offsetof(gal_scene, m)
 #define NUM(s, k, m, lo, lop, hi, hip, u) {s, k, T_NUM, OFF(m), lo, hi, lop, hip, 1.0, u, NULL}
@@ -119,6 +119,9 @@ const keydef scn_keys[K_COUNT] = {
     {"simulation", "start", T_ENUM, 0, 0, 0, 0, 0, 1.0,
      "rest | mean_wind (rest: the wind ramps in over wind_ramp; mean_wind: from the equilibrium under the mean wind)",
      scn_start_names},
+    NUM("stability", "speed_min", stability.speed_min, 0, 0, 80, 0, "m/s, lowest wind speed of `gallop stability`"),
+    NUM("stability", "speed_max", stability.speed_max, 0, 1, 80, 0, "m/s, highest wind speed"),
+    NUM("stability", "speed_step", stability.speed_step, 0.001, 0, 80, 0, "m/s, step of the wind speeds"),
     {"output", "directory", T_DIR, 0, 0, 0, 0, 0, 1.0, "path", NULL},
     {"output", "neighbour_phases", T_PAIRS, 0, -1000, 1000, 0, 0, 1.0,
      "m, y1, z1, y2, z2, ...: neighbouring phases at rest, offsets (horizontal downwind, up) from this "
@@ -160,7 +163,7 @@ const char *scn_key_list(const char *sec, char *buf, size_t n)
 
 const char *scn_section_list(void)
 {
-    return "span, stringing, conductor, ice, wind, effects, model, simulation, output";
+    return "span, stringing, conductor, ice, wind, effects, model, simulation, stability, output";
 }
 
 /* the keys that fix the equilibrium: exactly one of them (the stringing section counts once) */

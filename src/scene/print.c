@@ -166,6 +166,11 @@ static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
     put_key(fp, sc, K_TOL);
     fprintf(fp, "start = %s ; rest | mean_wind\n", scn_start_names[sc->simulation.start_mean_wind ? 1 : 0]);
 
+    fprintf(fp, "\n[stability]\n");
+    put_key(fp, sc, K_SPMIN);
+    put_key(fp, sc, K_SPMAX);
+    put_key(fp, sc, K_SPSTEP);
+
     fprintf(fp, "\n[output]\n");
     fprintf(fp, "; path\n");
     fprintf(fp, "directory = %s\n", sc->output.directory);

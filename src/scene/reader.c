@@ -176,6 +176,9 @@ static void defaults(gal_scene *sc)
     sc->simulation.output_interval = 0;
     sc->simulation.rho_inf = 0.9;
     sc->simulation.tolerance = 1e-6;
+    sc->stability.speed_min = 0.5; /* analysis/onset.h's GAL_ONSET_SPEED_MIN, _MAX, _STEP */
+    sc->stability.speed_max = 20;
+    sc->stability.speed_step = 0.25;
     sc->model.identification_amplitude = 0;
     sc->model.identification_twist = 30 * DEG;
     sc->model.reduced_recomputed = 0;

@@ -89,7 +89,7 @@ void gal_onset_default_opts(gal_onset_opts *o);
  * conductor and ice) is for the classic Den Hartog column. The rod's scratch values are used.
  * GAL_OK, or GAL_EINPUT (bad options, no table), GAL_EFAIL (no equilibrium at the first speed,
  * modes or LAPACK failed), GAL_ENOMEM. */
-int gal_onset_analyse(gal_rod *rod, const double *q_eq, const gal_loads *L, const gal_damping *C, double mass,
+int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L, const gal_damping *C, double mass,
                       const gal_onset_opts *o, gal_onset *out);
 void gal_onset_clear(gal_onset *r);
 

@@ -78,7 +78,7 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
 
 /* Static equilibrium under the mean wind (drag, lift and moment of the mean flow, no motion): q
  * is updated in place (start: the no-wind equilibrium). */
-int gal_loads_static(gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations);
+int gal_loads_static(const gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations);
 
 #ifdef __cplusplus
 }

@@ -148,6 +148,10 @@ typedef struct gal_scene {
     } simulation;
 
     struct {
+        double speed_min, speed_max, speed_step; /* m/s: the wind speeds of `gallop stability` */
+    } stability;
+
+    struct {
         char directory[GAL_PATH_MAX]; /* default out/<scene name> */
         int nneighbours;          /* neighbouring phases (at rest) for the clearances, 0 to 8 */
         double neighbour[GAL_MAX_NEIGHBOURS][2]; /* m: their offsets y (horizontal, downwind), z
