@@ -181,10 +181,10 @@ static int wind_and_effects(pstate *ps)
         return scn_kfail(ps, K_DT, "longer than the duration; allowed: 0 <= time_step <= duration "
                      "(%g s)", sc->simulation.duration);
     if (!(sc->stability.speed_max >= sc->stability.speed_min))
-        return kfail(ps, K_SPMAX, "below speed_min (%g m/s); allowed: speed_min <= speed_max",
+        return scn_kfail(ps, K_SPMAX, "below speed_min (%g m/s); allowed: speed_min <= speed_max",
                      sc->stability.speed_min);
     if ((sc->stability.speed_max - sc->stability.speed_min) / sc->stability.speed_step > 2000)
-        return kfail(ps, K_SPSTEP, "gives more than 2000 speeds from %g to %g m/s; allowed: speed_step >= "
+        return scn_kfail(ps, K_SPSTEP, "gives more than 2000 speeds from %g to %g m/s; allowed: speed_step >= "
                      "(speed_max - speed_min) / 2000", sc->stability.speed_min, sc->stability.speed_max);
     if (!sc->output.directory[0])
         snprintf(sc->output.directory, sizeof sc->output.directory, "out/%s", sc->name);
