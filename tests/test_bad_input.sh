@@ -234,6 +234,8 @@ table nan            "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n-90,nan,0.4,
 table text           "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n-90,big,0.4,0.03\n" "text.csv:4"
 table too_few_rows   "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n180,1.3,0.2,-0.01\n" "too_few_rows.csv"
 table more_than_period "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n0,1.2,0.1,0.01\n180,1.3,0.2,-0.01\n300,1,0,0\n" "more_than_period.csv:"
+table spline_overshoot "$src\nalpha_deg,cd,cl,cm\n-180,1,0,0\n-90,1,0,0\n0,1,0,0\n0.001,2,0,0\n90,1,0,0\n" "spline_overshoot.csv:7: between these rows"
+table spline_steep   "$src\nalpha_deg,cd,cl,cm\n-180,1,0,0\n-120,1,0,0\n-60,1,0,0\n0,1,0,0\n0.5,1,1,0\n60,1,1,0\n120,1,1,0\n" "periodic spline of cl"
 table empty          "" "empty.csv"
 table comments_only  "$src\n# nothing else\n" "comments_only.csv"
 head -c 4096 /dev/urandom >"$tmp/junk.bin"; printf '\0\377\001' >>"$tmp/junk.bin"
