@@ -58,8 +58,13 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     gal_json_kv_num(j, "twist_amplitude_deg", mid->peak_to_peak[3]);
     gal_json_kv_num(j, "time_to_steady_s", mid->time_to_steady_s);
     gal_json_kv_num(j, "rise_time_90_s", mid->rise_time_s);
+    /* the support tensions: tension_*_n are the whole run's (measure.h) */
     gal_json_kv_num(j, "tension_min_n", mid->tension_min);
     gal_json_kv_num(j, "tension_max_n", mid->tension_max);
+    gal_json_kv_num(j, "tension_min_run_n", mid->tension_min);
+    gal_json_kv_num(j, "tension_max_run_n", mid->tension_max);
+    gal_json_kv_num(j, "tension_min_steady_n", mid->tension_min_steady);
+    gal_json_kv_num(j, "tension_max_steady_n", mid->tension_max_steady);
     gal_json_key(j, "counters");
     gal_json_obj_begin(j);
     gal_json_kv_int(j, "steps", r->steps);
