@@ -195,6 +195,16 @@ key sim_probes_too_many     simulation "probes = .1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.
 key sim_ramp_negative       simulation "wind_ramp = -1"
 key sim_reverse_negative    simulation "wind_reverse_time = -1"
 key sim_output_dt_huge      simulation "output_interval = 20"
+# sizes computed from doubles (issue 14): bounded at scene load, never a cast overflow or GSL abort
+key sim_output_dt_tiny      simulation "output_interval = 1e-300" "0.0001 <= output_interval"
+key sim_output_dt_1e9       simulation "output_interval = 1e-9" "0.0001 <= output_interval"
+key sim_step_tiny           simulation "time_step = 1e-12" "1e-06 <= time_step"
+refused sim_samples_many "$tmp/base.ini" -1 "output_interval >= duration / 1000000" \
+    --set simulation.duration=1000 --set simulation.output_interval=1e-4
+refused sim_steps_many "$tmp/base.ini" -1 "time_step >= duration / 1000000000" \
+    --set simulation.duration=1e5 --set simulation.time_step=1e-5
+line=$(scene sim_duration_short simulation "output_interval = 0.5")
+refused sim_duration_short "$tmp/sim_duration_short.ini" $((line + 1)) "duration = 10: too short to measure"
 key sim_rho_inf_huge        simulation "rho_inf = 2"
 key sim_tolerance_zero      simulation "tolerance = 0"
 key sim_unknown_key         simulation "integrator = euler"

@@ -184,6 +184,7 @@ gal_aero_table *gal_aero_table_build(const char *name, const char *source, int r
     const double *const cv[3] = {cd, cl, cm};
     int given;
     *status = GAL_EINPUT;
+    gal_gsl_errors_install(); /* GSL errors as gallop errors, never an abort */
     if (!source || !source[0]) {
         gal_error(GAL_EINPUT, "%s: no '# source:' comment line: every table must say where its "
                   "numbers come from", name);

@@ -51,7 +51,9 @@ static int result_alloc(const gal_model *m, const gal_integrator_type *T, const 
     res->nprobe = m->nprobe;
     memcpy(res->probe, m->probe, sizeof res->probe);
     res->dt_out = dt_out;
-    long ns = (long)floor(o->duration / dt_out + 1e-9) + 1;
+    long ns; /* bounded: no cast overflow, enough samples to measure */
+    int st = gal_scene_sample_count(&m->sc, o->duration, dt_out, &ns);
+    if (st) return st;
     res->nsamples = ns;
     res->time = malloc((size_t)ns * sizeof(double));
     res->trace = calloc((size_t)ns * 4 * m->nprobe, sizeof(double));
@@ -83,7 +85,9 @@ int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const
     res->kind = T->kind;
     double dt_out = 0, fhi = 0;
     int st = gal_forward(m, d, GAL_STAGE_MODES);
+    long ns;
     if (!st) st = sampling(m, d, o, &dt_out, &fhi);
+    if (!st) st = gal_scene_sample_count(&m->sc, o->duration, dt_out, &ns); /* before the run */
     if (!st) st = gal_forward(m, d, T->needs);
     if (!st) st = result_alloc(m, T, o, dt_out, res);
     if (st) return st;
