@@ -192,6 +192,8 @@ key sim_step_over_duration  simulation "time_step = 100"
 key sim_probes_outside      simulation "probes = 0.5, 1.2"
 key sim_probes_empty_item   simulation "probes = 0.5,,0.2"
 key sim_probes_too_many     simulation "probes = .1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1" "probes"
+key sim_probes_duplicate    simulation "probes = 0.5, 0.5" "repeats probe 1"
+key sim_probes_same_digits  simulation "probes = 0.25, 0.2500000001" "repeats probe 1"
 key sim_ramp_negative       simulation "wind_ramp = -1"
 key sim_reverse_negative    simulation "wind_reverse_time = -1"
 key sim_output_dt_huge      simulation "output_interval = 20"
@@ -221,6 +223,7 @@ printf '[span]\nhorizontal_tension = 25000\n[conductor]\nname = Drake\n' >"$tmp/
 refused missing_length "$tmp/nolength.ini" 0 "length"
 # --set: the same checks, reported as "--set"
 refused set_elements_negative "$tmp/base.ini" -1 "elements" --set model.elements=-1
+refused set_probes_duplicate "$tmp/base.ini" -1 "repeats probe 1" --set simulation.probes=0.5,0.5
 refused set_table_bad "$tmp/base.ini" -1 "aero_table" --set ice.aero_table="$tmp/base.ini"
 
 # ---- [ice] aero_table: wrong tables (scene line 9 is aero_table) ----

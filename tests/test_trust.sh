@@ -46,5 +46,31 @@ else
     fail "simulate: no summary: $(cat "$dir/err")"
 fi
 
+# ---- the output directory, checked before any computation ----
+: >"$dir/afile"
+t0=$(date +%s)
+"$GALLOP" compare $S/iced_gallop.ini -o "$dir/afile" >/dev/null 2>"$dir/err"; rc=$?
+if [ $rc -eq 2 ] && grep -q "not a directory" "$dir/err" && [ $(( $(date +%s) - t0 )) -lt 5 ]; then
+    ok "compare -o a regular file: exit 2 before the computation"
+else
+    fail "compare -o a regular file: exit $rc, $(cat "$dir/err")"
+fi
+"$GALLOP" modes $S/drake_300m.ini -o "$dir/afile/sub" >/dev/null 2>"$dir/err"; rc=$?
+[ $rc -eq 2 ] && grep -q "afile" "$dir/err" && ok "modes -o below a regular file: exit 2" \
+    || fail "modes -o below a regular file: exit $rc, $(cat "$dir/err")"
+"$GALLOP" spectrum "$dir/sim/trace.csv" -o "" >/dev/null 2>"$dir/err"; rc=$?
+[ $rc -eq 2 ] && grep -q "empty" "$dir/err" && ok "spectrum -o '': exit 2, empty name" \
+    || fail "spectrum -o '': exit $rc, $(cat "$dir/err")"
+"$GALLOP" spectrum "$dir/sim/trace.csv" -o "$dir/afile" >/dev/null 2>"$dir/err"; rc=$?
+[ $rc -eq 2 ] && grep -q "not a directory" "$dir/err" && ok "spectrum -o a regular file: exit 2" \
+    || fail "spectrum -o a regular file: exit $rc, $(cat "$dir/err")"
+# ---- a duration too short to measure: refused before the run, naming the key, no directory ----
+"$GALLOP" compare $S/iced_gallop.ini --set simulation.duration=1 -o "$dir/new/cmp" >/dev/null 2>"$dir/err"; rc=$?
+if [ $rc -eq 2 ] && grep -q "\[simulation\] duration = 1 s: too short to measure" "$dir/err" && [ ! -e "$dir/new" ]; then
+    ok "compare with a 1 s duration: exit 2 naming [simulation] duration, no directory made"
+else
+    fail "compare with a 1 s duration: exit $rc, $(cat "$dir/err"), $(ls -d "$dir/new" 2>&1)"
+fi
+
 echo "#summary $passed $failed"
 [ $failed -eq 0 ]
