@@ -169,7 +169,8 @@ int gal_spectrum_envelope(gal_hilbert *h, const double *x, double band, double *
  * record, where the envelope is least reliable). A stationary record is steady from the start
  * (0); a growing one from when its envelope reaches the band. *t_steady = NaN when L = 0
  * (constant record). When the tail still trends (the means of its two halves differ by more
- * than max(2 tol L, 2 sigma): not steady yet), the start of the tail: the record's last 20%.
+ * than max(2 tol L, 2 sigma), or its mean and that of the 20% before it by more than 2 tol L:
+ * not steady yet), the start of the tail: the record's last 20%.
  * *level (may be NULL) receives L. */
 int gal_spectrum_steady_time(const double *env, size_t n, double dt, double tol, double *t_steady,
                              double *level);
