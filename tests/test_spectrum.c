@@ -549,6 +549,29 @@ static void test_noise_floor(void)
     CHECK(fl >= 1.0 && fl <= 1.02, "floor %g", fl);
 }
 
+/* issue 14: the one-sided factor: 2 inside, 1 at DC and (even segment) Nyquist. With one segment
+ * Parseval's identity for the windowed record is exact: sum(PSD) df = sum w^2 (x - mean)^2 / sum
+ * w^2, for any signal; a drift puts power at DC, a tone at the Nyquist frequency at the last bin. */
+static void test_one_sided_edges(void)
+{
+    size_t n = 256;
+    double dt = 0.1, x[256], psd[129], df, w2 = 0, e = 0, mean = 0;
+    rng_state = 777;
+    for (size_t j = 0; j < n; j++) x[j] = 0.5 * nrand() + 0.02 * (double)j + ((j % 2) ? -1.0 : 1.0);
+    for (size_t j = 0; j < n; j++) mean += x[j] / (double)n;
+    for (size_t j = 0; j < n; j++) {
+        double wj = 0.5 - 0.5 * cos(2 * PI * (double)j / (double)n);
+        w2 += wj * wj, e += wj * wj * (x[j] - mean) * (x[j] - mean);
+    }
+    gal_welch *w = gal_spectrum_welch_alloc(n);
+    CHECK(w && gal_spectrum_psd(w, x, n, dt, psd, &df, NULL) == GAL_OK, "%s", gal_error_message());
+    double sum = 0;
+    for (size_t k = 0; k < 129; k++) sum += psd[k] * df;
+    CHECK_REL(sum, e / w2, 1e-12);
+    CHECK(psd[0] * df > 1e-6 * sum && psd[128] * df > 1e-3 * sum, "power at DC %g and Nyquist %g", psd[0], psd[128]);
+    gal_spectrum_welch_free(w);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/gallop_spectrum_XXXXXX");
@@ -570,6 +593,7 @@ int main(void)
     RUN(test_trace_auto_pairs);
     RUN(test_noisy_multiline);
     RUN(test_noise_floor);
+    RUN(test_one_sided_edges);
     rmdir(tmpdir);
     return CHECK_SUMMARY();
 }

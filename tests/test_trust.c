@@ -39,10 +39,10 @@ static void test_sample_count(void)
     snprintf(sc.path, sizeof sc.path, "x.ini");
     sc.simulation.duration = 10;
     long ns;
-    CHECK(gal_scene_sample_count(&sc, 0.01, &ns) == GAL_OK && ns == 1001, "%ld", ns);
-    CHECK(gal_scene_sample_count(&sc, 1.0, &ns) == GAL_EINPUT && ns == 0, "11 samples accepted");
+    CHECK(gal_scene_sample_count(&sc, 10, 0.01, 64, &ns) == GAL_OK && ns == 1001, "%ld", ns);
+    CHECK(gal_scene_sample_count(&sc, 10, 1.0, 64, &ns) == GAL_EINPUT && ns == 0, "11 samples accepted");
     CHECK(strstr(gal_error_message(), "[simulation] duration") != NULL, "%s", gal_error_message());
-    CHECK(gal_scene_sample_count(&sc, 1e-300, &ns) == GAL_EINPUT, "1e301 samples accepted");
+    CHECK(gal_scene_sample_count(&sc, 10, 1e-300, 64, &ns) == GAL_EINPUT, "1e301 samples accepted");
     CHECK(strstr(gal_error_message(), "[simulation] output_interval") != NULL, "%s", gal_error_message());
 }
 

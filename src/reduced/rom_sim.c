@@ -72,7 +72,7 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     int sub = (int)ceil(dt_out / h - 1e-9);
     res->dt_out = dt_out;
     long ns;
-    int sst = gal_scene_sample_count(sc, sc->simulation.duration, dt_out, &ns); /* bounded, enough to measure */
+    int sst = gal_scene_sample_count(sc, sc->simulation.duration, dt_out, 1, &ns); /* bounded */
     if (sst) return sst;
     res->nsamples = ns;
     res->time = malloc((size_t)ns * sizeof(double));

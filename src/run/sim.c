@@ -51,8 +51,8 @@ static int result_alloc(const gal_model *m, const gal_integrator_type *T, const 
     res->nprobe = m->nprobe;
     memcpy(res->probe, m->probe, sizeof res->probe);
     res->dt_out = dt_out;
-    long ns; /* bounded: no cast overflow, enough samples to measure */
-    int st = gal_scene_sample_count(&m->sc, o->duration, dt_out, &ns);
+    long ns; /* bounded: no cast overflow */
+    int st = gal_scene_sample_count(&m->sc, o->duration, dt_out, 1, &ns);
     if (st) return st;
     res->nsamples = ns;
     res->time = malloc((size_t)ns * sizeof(double));
@@ -78,6 +78,16 @@ static int integrate(const gal_integrator_type *T, void *state, gal_sim_result *
     return st;
 }
 
+int gal_run_check_measurable(const gal_model *m, gal_data *d, const gal_run_opts *o)
+{
+    double dt_out, fhi;
+    long ns;
+    int st = gal_forward(m, d, GAL_STAGE_MODES);
+    if (!st) st = sampling(m, d, o, &dt_out, &fhi);
+    if (!st) st = gal_scene_sample_count(&m->sc, o->duration, dt_out, GAL_SCENE_MIN_SAMPLES, &ns);
+    return st;
+}
+
 int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const gal_run_opts *o,
             gal_sim_result *res)
 {
@@ -85,9 +95,7 @@ int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const
     res->kind = T->kind;
     double dt_out = 0, fhi = 0;
     int st = gal_forward(m, d, GAL_STAGE_MODES);
-    long ns;
     if (!st) st = sampling(m, d, o, &dt_out, &fhi);
-    if (!st) st = gal_scene_sample_count(&m->sc, o->duration, dt_out, &ns); /* before the run */
     if (!st) st = gal_forward(m, d, T->needs);
     if (!st) st = result_alloc(m, T, o, dt_out, res);
     if (st) return st;
@@ -134,6 +142,11 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
 {
     gal_run_opts o;
     gal_run_opts_from_scene(s->sc, &o);
+    int st = gal_run_check_measurable(s->model, s->data, &o);
+    if (st) {
+        memset(res, 0, sizeof *res);
+        return st;
+    }
     return gal_run(s->model, s->data, kind == GAL_MODEL_FULL ? &gal_integrator_full : gal_integrator_reduced_of(s->model),
                    &o, res);
 }

@@ -196,7 +196,7 @@ static int sim_sizes(pstate *ps)
     return 1;
 }
 
-int gal_scene_sample_count(const gal_scene *sc, double duration, double dt_out, long *ns)
+int gal_scene_sample_count(const gal_scene *sc, double duration, double dt_out, long min_samples, long *ns)
 {
     double T = duration, n = floor(T / dt_out + 1e-9) + 1;
     *ns = 0;
@@ -204,11 +204,10 @@ int gal_scene_sample_count(const gal_scene *sc, double duration, double dt_out, 
         return gal_error(GAL_EINPUT, "%s: [simulation] output_interval = %g s: %.3g samples over the "
                          "duration (%g s); allowed: at most %ld samples", sc->path, dt_out, n, T,
                          GAL_SCENE_MAX_SAMPLES);
-    if (n < (double)GAL_SCENE_MIN_SAMPLES)
+    if (n < (double)min_samples)
         return gal_error(GAL_EINPUT, "%s: [simulation] duration = %g s: too short to measure: %.0f "
                          "samples at the output interval %g s; allowed: duration >= %g s (%ld "
-                         "samples)", sc->path, T, n, dt_out, (GAL_SCENE_MIN_SAMPLES - 1) * dt_out,
-                         GAL_SCENE_MIN_SAMPLES);
+                         "samples)", sc->path, T, n, dt_out, (double)(min_samples - 1) * dt_out, min_samples);
     *ns = (long)n;
     return GAL_OK;
 }

@@ -172,9 +172,11 @@ typedef struct gal_scene {
 
 /* The number of trace samples of a run of `duration` s (the scene's, or a study's) sampled every
  * dt_out s (floor(duration / dt_out) + 1), into *ns; GAL_EINPUT naming sc's file, [simulation]
- * duration or output_interval and the allowed range when it is outside [GAL_SCENE_MIN_SAMPLES,
- * GAL_SCENE_MAX_SAMPLES] (never a cast overflow). */
-int gal_scene_sample_count(const gal_scene *sc, double duration, double dt_out, long *ns);
+ * duration or output_interval and the allowed range when it is below min_samples
+ * (GAL_SCENE_MIN_SAMPLES for a run that is measured) or above GAL_SCENE_MAX_SAMPLES (never a
+ * cast overflow). */
+int gal_scene_sample_count(const gal_scene *sc, double duration, double dt_out, long min_samples,
+                           long *ns);
 
 /* Effect names as written in scene files, indexed by gal_effect. */
 extern const char *const gal_effect_names[GAL_FX_COUNT];
