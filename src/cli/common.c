@@ -126,7 +126,7 @@ int gal_cli_scene(const gal_cli_command *c, const gal_cli_args *a, gal_scene *sc
     }
     /* the output directory is checked now, before any computation (issue 14) */
     if ((st = gal_outset_check(sc->output.directory)) != GAL_OK) {
-        fprintf(stderr, "gallop %s: %s\n", cmd, gal_error_message());
+        fprintf(stderr, "gallop %s: %s\n", c->name, gal_error_message());
         return 2;
     }
     if (outdir) *outdir = sc->output.directory;

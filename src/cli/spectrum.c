@@ -150,8 +150,6 @@ int gal_cli_spectrum(int argc, char **argv)
     if (!st && (st = gal_outset_check(outdir)) != GAL_OK) { /* before any computation */
         fprintf(stderr, "gallop spectrum: -o: %s\n", gal_error_message());
         free(outdir);
-        free(o.columns);
-        free(o.pairs);
         return 2;
     }
     free(outdir);

@@ -176,21 +176,21 @@ static int sim_sizes(pstate *ps)
     const gal_scene *sc = ps->sc;
     double T = sc->simulation.duration, dto = sc->simulation.output_interval, h = sc->simulation.time_step;
     if (dto > 0 && dto < GAL_SCENE_MIN_OUTPUT_INTERVAL)
-        return kfail(ps, K_OUTDT, "too small; allowed: 0 (chosen) or %g <= output_interval <= 10 s",
+        return scn_kfail(ps, K_OUTDT, "too small; allowed: 0 (chosen) or %g <= output_interval <= 10 s",
                      GAL_SCENE_MIN_OUTPUT_INTERVAL);
     if (dto > 0 && T / dto > (double)GAL_SCENE_MAX_SAMPLES)
-        return kfail(ps, K_OUTDT, "%.3g samples over the duration (%g s); allowed: 0 (chosen) or "
+        return scn_kfail(ps, K_OUTDT, "%.3g samples over the duration (%g s); allowed: 0 (chosen) or "
                      "output_interval >= duration / %ld = %g s", T / dto, T, GAL_SCENE_MAX_SAMPLES,
                      T / (double)GAL_SCENE_MAX_SAMPLES);
     if (dto > 0 && T / dto + 1e-9 < (double)(GAL_SCENE_MIN_SAMPLES - 1))
-        return kfail(ps, K_DUR, "too short to measure: %ld samples at output_interval = %g s; allowed: "
+        return scn_kfail(ps, K_DUR, "too short to measure: %ld samples at output_interval = %g s; allowed: "
                      "duration >= %g s (%ld samples)", (long)floor(T / dto + 1e-9) + 1, dto,
                      (GAL_SCENE_MIN_SAMPLES - 1) * dto, GAL_SCENE_MIN_SAMPLES);
     if (h > 0 && h < GAL_SCENE_MIN_TIME_STEP)
-        return kfail(ps, K_DT, "too small; allowed: 0 (chosen) or %g <= time_step <= duration s",
+        return scn_kfail(ps, K_DT, "too small; allowed: 0 (chosen) or %g <= time_step <= duration s",
                      GAL_SCENE_MIN_TIME_STEP);
     if (h > 0 && T / h > (double)GAL_SCENE_MAX_STEPS)
-        return kfail(ps, K_DT, "%.3g steps over the duration (%g s); allowed: 0 (chosen) or "
+        return scn_kfail(ps, K_DT, "%.3g steps over the duration (%g s); allowed: 0 (chosen) or "
                      "time_step >= duration / %ld = %g s", T / h, T, GAL_SCENE_MAX_STEPS,
                      T / (double)GAL_SCENE_MAX_STEPS);
     return 1;
