@@ -76,7 +76,7 @@ trace() {
                    0.7 * h, 0.7 * v, 0, 0.7 * tw, 30500 + 3000 * a * sin(2 * w), 30500 + 2900 * a * sin(2 * w + 0.1) > f
         }
         f = dir "/psd.csv"
-        print "frequency_hz,p0.5_horizontal_m,p0.5_vertical_m,p0.5_twist_deg" > f
+        print "frequency_hz,p0.5_horizontal_m2_per_hz,p0.5_vertical_m2_per_hz,p0.5_twist_deg2_per_hz" > f
         for (i = 0; i <= 200; i++) {
             x = i * 0.025; L = 1 / (1 + ((x - f0) / 0.02) ^ 2) + 1e-4 / (1 + x * x)
             printf "%.4f,%.6g,%.6g,%.6g\n", x, 0.06 * A * A * L, A * A * L, 36 * A * A * L > f

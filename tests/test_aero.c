@@ -381,6 +381,42 @@ static void test_fuzz(void)
     free(p);
 }
 
+/* issue 14: the interpolant is checked between rows, not only at them: two close rows with
+ * different values make the periodic spline overshoot (C_D of 1.5e4 here); a steep but smooth
+ * table passes; a jump of 1 in C_L over 0.5 deg exceeds the slope bound. The message names the
+ * two rows where the bound is exceeded most. */
+static void test_interpolant_bounds(void)
+{
+    double a[5] = {-180, -90, 0, 0.001, 90}, cd[5] = {1, 1, 1, 2, 1}, z[5] = {0, 0, 0, 0, 0};
+    gal_aero_table *t = gal_aero_table_make("close", "test", 5, a, cd, z, z);
+    CHECK(t == NULL, "two rows 0.001 deg apart with C_D 1 and 2 accepted");
+    const char *msg = gal_error_message();
+    CHECK(strstr(msg, "close: row 4 and close: row 5") != NULL, "names the rows: %s", msg);
+    CHECK(strstr(msg, "periodic spline of cd") != NULL, "names the coefficient: %s", msg);
+    gal_aero_table_free(t);
+    /* the same shape with the rows far enough apart stays within the bounds */
+    double a2[5] = {-180, -90, 0, 45, 90};
+    t = gal_aero_table_make("spread", "test", 5, a2, cd, z, z);
+    CHECK(t != NULL, "%s", gal_error_message());
+    gal_aero_table_free(t);
+    /* a slope of 2 per degree (115 per rad) with values within |c| <= 10 */
+    double a3[8] = {-180, -120, -60, 0, 0.5, 60, 120, 179}, cl[8] = {0, 0, 0, 0, 1, 1, 1, 0};
+    double d3[8] = {1, 1, 1, 1, 1, 1, 1, 1}, z3[8] = {0};
+    t = gal_aero_table_make("steep", "test", 8, a3, d3, cl, z3);
+    CHECK(t == NULL, "a slope of 115 per rad accepted");
+    msg = gal_error_message();
+    CHECK(strstr(msg, "dcl/dalpha") != NULL || strstr(msg, "cl =") != NULL, "%s", msg);
+    gal_aero_table_free(t);
+    /* the shipped tables' splines stay far inside both bounds (checked when loaded) */
+    for (int i = 0; i < 3; i++) {
+        const char *f[3] = {"data/aero/iced_d_shape.csv", "data/aero/iced_crescent.csv",
+                            "data/aero/square_parkinson_smith.csv"};
+        t = gal_aero_table_load(f[i]);
+        CHECK(t != NULL, "%s: %s", f[i], gal_error_message());
+        gal_aero_table_free(t);
+    }
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/gallop_aero_XXXXXX");
@@ -392,6 +428,7 @@ int main(void)
     RUN(test_load_derivative_fd);
     RUN(test_den_hartog);
     RUN(test_shipped_tables);
+    RUN(test_interpolant_bounds);
     RUN(test_bad_tables);
     RUN(test_fuzz);
     rmdir(tmpdir);

@@ -192,9 +192,21 @@ key sim_step_over_duration  simulation "time_step = 100"
 key sim_probes_outside      simulation "probes = 0.5, 1.2"
 key sim_probes_empty_item   simulation "probes = 0.5,,0.2"
 key sim_probes_too_many     simulation "probes = .1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1,.1" "probes"
+key sim_probes_duplicate    simulation "probes = 0.5, 0.5" "repeats probe 1"
+key sim_probes_same_digits  simulation "probes = 0.25, 0.2500000001" "repeats probe 1"
 key sim_ramp_negative       simulation "wind_ramp = -1"
 key sim_reverse_negative    simulation "wind_reverse_time = -1"
 key sim_output_dt_huge      simulation "output_interval = 20"
+# sizes computed from doubles (issue 14): bounded at scene load, never a cast overflow or GSL abort
+key sim_output_dt_tiny      simulation "output_interval = 1e-300" "0.0001 <= output_interval"
+key sim_output_dt_1e9       simulation "output_interval = 1e-9" "0.0001 <= output_interval"
+key sim_step_tiny           simulation "time_step = 1e-12" "1e-06 <= time_step"
+refused sim_samples_many "$tmp/base.ini" -1 "output_interval >= duration / 1000000" \
+    --set simulation.duration=1000 --set simulation.output_interval=1e-4
+refused sim_steps_many "$tmp/base.ini" -1 "time_step >= duration / 1000000000" \
+    --set simulation.duration=1e5 --set simulation.time_step=1e-5
+line=$(scene sim_duration_short simulation "output_interval = 0.5")
+refused sim_duration_short "$tmp/sim_duration_short.ini" $((line + 1)) "duration = 10: too short to measure"
 key sim_rho_inf_huge        simulation "rho_inf = 2"
 key sim_tolerance_zero      simulation "tolerance = 0"
 key sim_unknown_key         simulation "integrator = euler"
@@ -211,6 +223,7 @@ printf '[span]\nhorizontal_tension = 25000\n[conductor]\nname = Drake\n' >"$tmp/
 refused missing_length "$tmp/nolength.ini" 0 "length"
 # --set: the same checks, reported as "--set"
 refused set_elements_negative "$tmp/base.ini" -1 "elements" --set model.elements=-1
+refused set_probes_duplicate "$tmp/base.ini" -1 "repeats probe 1" --set simulation.probes=0.5,0.5
 refused set_table_bad "$tmp/base.ini" -1 "aero_table" --set ice.aero_table="$tmp/base.ini"
 
 # ---- [ice] aero_table: wrong tables (scene line 9 is aero_table) ----
@@ -234,6 +247,8 @@ table nan            "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n-90,nan,0.4,
 table text           "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n-90,big,0.4,0.03\n" "text.csv:4"
 table too_few_rows   "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n180,1.3,0.2,-0.01\n" "too_few_rows.csv"
 table more_than_period "$src\nalpha_deg,cd,cl,cm\n-180,1.3,0.2,-0.01\n0,1.2,0.1,0.01\n180,1.3,0.2,-0.01\n300,1,0,0\n" "more_than_period.csv:"
+table spline_overshoot "$src\nalpha_deg,cd,cl,cm\n-180,1,0,0\n-90,1,0,0\n0,1,0,0\n0.001,2,0,0\n90,1,0,0\n" "spline_overshoot.csv:7: between these rows"
+table spline_steep   "$src\nalpha_deg,cd,cl,cm\n-180,1,0,0\n-120,1,0,0\n-60,1,0,0\n0,1,0,0\n0.5,1,1,0\n60,1,1,0\n120,1,1,0\n" "periodic spline of cl"
 table empty          "" "empty.csv"
 table comments_only  "$src\n# nothing else\n" "comments_only.csv"
 head -c 4096 /dev/urandom >"$tmp/junk.bin"; printf '\0\377\001' >>"$tmp/junk.bin"

@@ -26,7 +26,7 @@ if [ $rc -eq 0 ] && [ -s "$dir/spectrum/summary.json" ] && [ -s "$dir/spectrum/p
 else
   fail "good trace: exit $rc, $(cat "$dir/err")"
 fi
-if head -n 1 "$dir/spectrum/psd.csv" 2>/dev/null | grep -qx 'frequency_hz,mid_y,mid_z,tension'; then
+if head -n 1 "$dir/spectrum/psd.csv" 2>/dev/null | grep -qx 'frequency_hz,mid_y_psd,mid_z_psd,tension_psd'; then
   ok "psd.csv header"
 else
   fail "psd.csv header: $(head -n 1 "$dir/spectrum/psd.csv" 2>/dev/null)"
@@ -51,7 +51,7 @@ if printf '%s\n' "$out" | grep -q '^mid_z'; then ok "table on stdout"; else fail
   -o "$dir/out2" >/dev/null 2>"$dir/err"; rc=$?
 if [ $rc -eq 0 ] && grep -q '"segment": 1024' "$dir/out2/summary.json" \
    && grep -q '"steady_from_s": 30' "$dir/out2/summary.json" \
-   && head -n 1 "$dir/out2/psd.csv" | grep -qx 'frequency_hz,tension'; then
+   && head -n 1 "$dir/out2/psd.csv" | grep -qx 'frequency_hz,tension_psd'; then
   ok "options --column --pair --from --segment -o"
 else
   fail "options: exit $rc, $(cat "$dir/err")"

@@ -198,11 +198,47 @@ static void test_step_refinement(void)
     gal_equilibrium_clear(&eq);
 }
 
+/* issue 14: the sign of the ice's mass coupling, from the kinetic energy of the ice centre: it
+ * moves at xdot + e thetadot (t x c); with the nodes moving along t x c, a positive twist rate
+ * adds to its speed, a negative one subtracts: 1/2 v^T M v is larger for thetadot > 0, by
+ * 2 m_i e |xdot| |thetadot| l0 (both nodes' halves of the edge). */
+static void test_eccentric_ice_mass_sign(void)
+{
+    eccentric = 1;
+    gal_rod_params p = span(30);
+    eccentric = 0;
+    gal_equilibrium eq;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
+    const gal_rod *rod = eq.rod;
+    CHECK(rod->ecc_c != NULL, "no eccentric ice");
+    if (!rod->ecc_c) { gal_equilibrium_clear(&eq); return; }
+    int n = rod->ndof, j = rod->p.elements / 2;
+    double *v = calloc((size_t)n, sizeof(double)), *y = calloc((size_t)n, sizeof(double)), T[2], g[3];
+    const double *t = rod->tbar + 3 * j, *c = rod->ecc_c + 3 * j;
+    g[0] = t[1] * c[2] - t[2] * c[1], g[1] = t[2] * c[0] - t[0] * c[2], g[2] = t[0] * c[1] - t[1] * c[0];
+    for (int sgn = 0; sgn < 2; sgn++) {
+        memset(v, 0, (size_t)n * sizeof(double));
+        for (int node = j; node <= j + 1; node++)
+            for (int k = 0; k < 3; k++)
+                if (rod->dof[3 * node + k] >= 0) v[rod->dof[3 * node + k]] = g[k];
+        v[rod->dof[3 * rod->nn + j]] = sgn ? -1.0 : 1.0;
+        gal_rod_mass_mult(rod, v, y);
+        T[sgn] = 0;
+        for (int d = 0; d < n; d++) T[sgn] += 0.5 * v[d] * y[d];
+    }
+    double want = 2 * p.ecc_mass * p.ecc * rod->l0[j];
+    CHECK_REL(T[0] - T[1], want, 1e-9);
+    free(v);
+    free(y);
+    gal_equilibrium_clear(&eq);
+}
+
 int main(void)
 {
     RUN(test_small_vibration_frequency_and_energy);
     RUN(test_large_vibration_bounded);
     RUN(test_eccentric_ice_coupling);
     RUN(test_step_refinement);
+    RUN(test_eccentric_ice_mass_sign);
     return CHECK_SUMMARY();
 }

@@ -2,6 +2,9 @@
  * message that quotes the current one, and one message per thread (two threads setting
  * different errors each read their own). */
 #include "check.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_interp.h>
 #include "gallop.h"
 
 #include <pthread.h>
@@ -71,8 +74,25 @@ static void test_per_thread(void)
           gal_error_message());
 }
 
+/* issue 14: a GSL error is a gallop error (GAL_EFAIL, the reason in the message), never an
+ * abort: GSL's default handler would kill this program here. */
+static void test_gsl_errors(void)
+{
+    gal_gsl_errors_install();
+    gal_gsl_errors_install(); /* idempotent */
+    gal_error_clear();
+    double x[4] = {0, 2, 1, 3}, y[4] = {0, 1, 2, 3}; /* x not increasing: GSL_EINVAL */
+    gsl_interp *s = gsl_interp_alloc(gsl_interp_linear, 4);
+    CHECK(s != NULL, "gsl_interp_alloc");
+    int st = gsl_interp_init(s, x, y, 4);
+    CHECK(st == GSL_EINVAL, "gsl_interp_init returned %d", st);
+    CHECK(strstr(gal_error_message(), "GSL: ") != NULL, "%s", gal_error_message());
+    gsl_interp_free(s);
+}
+
 int main(void)
 {
+    RUN(test_gsl_errors);
     RUN(test_exit_codes);
     RUN(test_message);
     RUN(test_per_thread);

@@ -352,6 +352,37 @@ static void test_scene_hash(void)
     CHECK(!strcmp(gal_record_version(), GAL_VERSION) && gal_record_commit()[0], "version and commit");
 }
 
+/* issue 14: the output directory is checked before any computation, without making anything;
+ * a set freed uncommitted removes the directories it made (no empty directory is left). */
+static void test_check_and_no_empty_dir(void)
+{
+    char *d = fresh_dir(), sub[512], file[256];
+    CHECK(gal_outset_check(d) == GAL_OK, "a new directory: %s", gal_error_message());
+    struct stat sb;
+    CHECK(stat(d, &sb) != 0, "the check made %s", d);
+    CHECK(gal_outset_check("") == GAL_EINPUT, "an empty name");
+    snprintf(file, sizeof file, "%s_file", d);
+    FILE *fp = fopen(file, "w");
+    if (fp) fclose(fp);
+    CHECK(gal_outset_check(file) == GAL_EIO, "a regular file accepted");
+    CHECK(strstr(gal_error_message(), "not a directory") != NULL, "%s", gal_error_message());
+    snprintf(sub, sizeof sub, "%s/below", file);
+    CHECK(gal_outset_check(sub) == GAL_EIO, "a directory below a regular file accepted");
+    /* begin in a new nested directory, free uncommitted: nothing stays */
+    snprintf(sub, sizeof sub, "%s/a/b", d);
+    gal_outset *o;
+    CHECK(gal_outset_begin(&o, sub, "test") == GAL_OK, "%s", gal_error_message());
+    CHECK(stat(sub, &sb) == 0, "begin did not make %s", sub);
+    gal_outset_free(o);
+    CHECK(stat(d, &sb) != 0, "an uncommitted set left %s", d);
+    /* an existing directory stays */
+    CHECK(mkdir(d, 0777) == 0, "mkdir");
+    CHECK(gal_outset_begin(&o, d, "test") == GAL_OK, "%s", gal_error_message());
+    gal_outset_free(o);
+    CHECK(stat(d, &sb) == 0 && S_ISDIR(sb.st_mode), "the user's directory was removed");
+    free(d);
+}
+
 int main(void)
 {
     snprintf(root, sizeof root, "/tmp/gallop_outset_XXXXXX");
@@ -365,6 +396,7 @@ int main(void)
     RUN(test_full_disk);
     RUN(test_stale_leftovers);
     RUN(test_scene_hash);
+    RUN(test_check_and_no_empty_dir);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", root);
     if (system(cmd) != 0) printf("  (could not remove %s)\n", root);

@@ -294,11 +294,50 @@ static void test_free_vibration_reduced_vs_full(void)
     free_vibration_vs_full(GAL_FAMILY_HORIZONTAL, 2.0);
 }
 
+/* issue 14: the reduced model's damping is the structural damping projected on its
+ * mass-normalized modes; for Rayleigh damping alpha M + beta K that is, in closed form,
+ * alpha + beta omega^2 on the diagonal (not omega) and zero off it. */
+static void test_rayleigh_projection(void)
+{
+    gal_rod_params p = {.length = 200, .elements = 40, .EA = 3e7, .EI = 20, .GJ = 150, .mass = 1.6,
+                        .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
+    gal_equilibrium eq;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
+    gal_modes md;
+    int want[4] = {3, 2, 1, 0};
+    CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
+    int sel[8], r = 0;
+    for (int k = 0; k < md.n && r < 8; k++)
+        if (md.mode[k].selected) sel[r++] = k;
+    int mid = eq.rod->nn / 2;
+    gal_obs obs[1] = {{{3 * mid + 2, -1}, {1.0, 0.0}}};
+    gal_reduced_opts o;
+    gal_reduced_default_opts(&o);
+    gal_reduced *rm = gal_reduced_build(eq.rod, eq.q, &md, sel, r, obs, 1, &o);
+    CHECK(rm != NULL, "%s", gal_error_message());
+    double a = 0.07, b = 0.003;
+    gal_damping *c = gal_damping_rayleigh_alloc(eq.rod, eq.q, a, b);
+    gal_rdyn *rd = rm && c ? gal_rdyn_alloc(rm, eq.rod, eq.q, c, NULL, 32, 1e-9, 0.01, -1) : NULL;
+    CHECK(rd != NULL, "set-up: %s", gal_error_message());
+    if (rd)
+        for (int i = 0; i < r; i++)
+            for (int j = 0; j < r; j++) {
+                double want_ij = i == j ? a + b * md.mode[sel[i]].omega * md.mode[sel[i]].omega : 0.0;
+                CHECK_NEAR(rd->damp[(size_t)j * r + i], want_ij, 1e-6 * (a + b * md.mode[sel[r - 1]].omega * md.mode[sel[r - 1]].omega));
+            }
+    gal_damping_free(c);
+    gal_rdyn_free(rd);
+    gal_reduced_free(rm);
+    gal_modes_clear(&md);
+    gal_equilibrium_clear(&eq);
+}
+
 int main(void)
 {
     RUN(test_kirchhoff_carrier);
     RUN(test_condensation_matters);
     RUN(test_reduced_force_at_random_states);
     RUN(test_free_vibration_reduced_vs_full);
+    RUN(test_rayleigh_projection);
     return CHECK_SUMMARY();
 }

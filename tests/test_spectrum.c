@@ -492,6 +492,86 @@ static void test_trace_auto_pairs(void)
     CHECK(gal_trace_auto_pairs(&tr, sel, 2, p) == 0, "only among the selected columns");
 }
 
+/* issue 14: stationary noisy multi-line traces. Two lines (0.4227 Hz, amplitude 1, and 0.45 Hz
+ * at half of it: they beat every 36.6 s) in white noise over 600 s: the automatic rule calls it
+ * steady from the start (not near the end), the whole record is analysed, both lines are
+ * reported with their amplitudes, and no noise peak is (10 dB above the local floor). A sine in
+ * noise likewise; pure noise gives no peak. */
+#define ML_N 12000
+static double ml_t[ML_N], ml_x[3][ML_N];
+static double *ml_cols[3] = {ml_x[0], ml_x[1], ml_x[2]};
+static char *ml_names[3] = {"two_lines", "sine_noise", "noise"};
+static gal_trace ml_tr = {ML_N, 3, ml_t, ml_cols, ml_names, "time", 0.05};
+
+static void test_noisy_multiline(void)
+{
+    rng_state = 4242;
+    for (size_t k = 0; k < ML_N; k++) {
+        double t = ml_t[k] = k * 0.05;
+        ml_x[0][k] = sin(2 * PI * 0.4227 * t) + 0.5 * sin(2 * PI * 0.45 * t + 1) + 0.3 * nrand();
+        ml_x[1][k] = 2 + 0.8 * cos(2 * PI * 1.3 * t) + 0.5 * nrand();
+        ml_x[2][k] = 0.7 * nrand();
+    }
+    int sel[3] = {0, 1, 2};
+    gal_trace_spectrum s;
+    int st = gal_trace_spectrum_run(&ml_tr, sel, 3, NULL, 0, NAN, 0, &s);
+    CHECK(st == GAL_OK, "%s", gal_error_message());
+    if (st) { gal_trace_spectrum_clear(&s); return; }
+    printf("    steady from %g s; times to steady %g %g %g s\n", ml_t[s.i0], s.tss[0], s.tss[1], s.tss[2]);
+    CHECK(s.tss[0] < 60 && s.tss[1] < 60, "stationary traces steady near the start: %g %g s", s.tss[0], s.tss[1]);
+    CHECK(ml_t[s.i0] < 60, "the analysis starts at %g s, not in the second half", ml_t[s.i0]);
+    const gal_measures *m = &s.m[0];
+    int f1 = -1, f2 = -1;
+    for (size_t q = 0; q < m->npeaks; q++) {
+        printf("    two lines: peak %zu at %.5f Hz, amplitude %.4f\n", q, m->peaks[q].frequency, m->peaks[q].amplitude);
+        if (fabs(m->peaks[q].frequency - 0.4227) < 0.002) f1 = (int)q;
+        else if (fabs(m->peaks[q].frequency - 0.45) < 0.002) f2 = (int)q;
+    }
+    CHECK(f1 == 0, "the 0.4227 Hz line is the dominant one (%d)", f1);
+    CHECK(f2 >= 0, "the 0.45 Hz line at half amplitude is reported");
+    if (f1 >= 0) CHECK_REL(m->peaks[f1].amplitude, 1.0, 0.05);
+    if (f2 >= 0) CHECK_REL(m->peaks[f2].amplitude, 0.5, 0.05);
+    CHECK(m->npeaks == 2, "%zu peaks: only the two lines stand above the noise", m->npeaks);
+    CHECK(s.m[1].npeaks == 1 && fabs(s.m[1].frequency - 1.3) < 1e-3, "sine in noise: %zu peaks, %g Hz",
+          s.m[1].npeaks, s.m[1].frequency);
+    CHECK_REL(s.m[1].amplitude, 0.8, 0.05);
+    CHECK(s.m[2].npeaks == 0, "pure noise: %zu peaks (%g Hz)", s.m[2].npeaks, s.m[2].frequency);
+    gal_trace_spectrum_clear(&s);
+}
+
+/* The local noise floor is the median of the PSD around the bin (a line does not raise it). */
+static void test_noise_floor(void)
+{
+    double psd[201], scratch[2 * 16 + 1];
+    for (int k = 0; k < 201; k++) psd[k] = 1.0 + 0.01 * (k % 3);
+    psd[100] = 1e6, psd[99] = psd[101] = 1e3;
+    double fl = gal_spectrum_noise_floor(psd, 201, 100, scratch);
+    CHECK(fl >= 1.0 && fl <= 1.02, "floor %g", fl);
+}
+
+/* issue 14: the one-sided factor: 2 inside, 1 at DC and (even segment) Nyquist. With one segment
+ * Parseval's identity for the windowed record is exact: sum(PSD) df = sum w^2 (x - mean)^2 / sum
+ * w^2, for any signal; a drift puts power at DC, a tone at the Nyquist frequency at the last bin. */
+static void test_one_sided_edges(void)
+{
+    size_t n = 256;
+    double dt = 0.1, x[256], psd[129], df, w2 = 0, e = 0, mean = 0;
+    rng_state = 777;
+    for (size_t j = 0; j < n; j++) x[j] = 0.5 * nrand() + 0.02 * (double)j + ((j % 2) ? -1.0 : 1.0);
+    for (size_t j = 0; j < n; j++) mean += x[j] / (double)n;
+    for (size_t j = 0; j < n; j++) {
+        double wj = 0.5 - 0.5 * cos(2 * PI * (double)j / (double)n);
+        w2 += wj * wj, e += wj * wj * (x[j] - mean) * (x[j] - mean);
+    }
+    gal_welch *w = gal_spectrum_welch_alloc(n);
+    CHECK(w && gal_spectrum_psd(w, x, n, dt, psd, &df, NULL) == GAL_OK, "%s", gal_error_message());
+    double sum = 0;
+    for (size_t k = 0; k < 129; k++) sum += psd[k] * df;
+    CHECK_REL(sum, e / w2, 1e-12);
+    CHECK(psd[0] * df > 1e-6 * sum && psd[128] * df > 1e-3 * sum, "power at DC %g and Nyquist %g", psd[0], psd[128]);
+    gal_spectrum_welch_free(w);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/gallop_spectrum_XXXXXX");
@@ -511,6 +591,9 @@ int main(void)
     RUN(test_trace_spectrum_auto);
     RUN(test_trace_spectrum_options);
     RUN(test_trace_auto_pairs);
+    RUN(test_noisy_multiline);
+    RUN(test_noise_floor);
+    RUN(test_one_sided_edges);
     rmdir(tmpdir);
     return CHECK_SUMMARY();
 }

@@ -161,15 +161,35 @@ int gal_spectrum_steady_time(const double *env, size_t n, double dt, double tol,
     double *tail = malloc(nl * sizeof *tail);
     if (!tail) return gal_error(GAL_ENOMEM, "out of memory");
     memcpy(tail, env + n - nl, nl * sizeof *tail);
+    double m1 = 0, m2 = 0, m0 = 0;   /* the means of its two halves and of the 20% before it */
+    for (size_t j = 0; j < nl; j++) *(j < nl / 2 ? &m1 : &m2) += tail[j];
+    for (size_t j = n - 2 * nl; j < n - nl; j++) m0 += env[j];
+    m0 /= (double)nl;
+    double mt = (m1 + m2) / (double)nl;
+    m1 /= (double)(nl / 2 > 0 ? nl / 2 : 1), m2 /= (double)(nl - nl / 2);
     qsort(tail, nl, sizeof *tail, cmp_double);
     double L = nl % 2 ? tail[nl / 2] : 0.5 * (tail[nl / 2 - 1] + tail[nl / 2]);
+    for (size_t j = 0; j < nl; j++) tail[j] = fabs(tail[j] - L);
+    qsort(tail, nl, sizeof *tail, cmp_double);
+    double sd = 1.4826 * (nl % 2 ? tail[nl / 2] : 0.5 * (tail[nl / 2 - 1] + tail[nl / 2])); /* MAD */
+    double half = fmax(tol * L, 5 * sd), lo = L - half, hi = L + half;
     free(tail);
     if (level) *level = L;
     if (!(L > 0) || !isfinite(L)) return GAL_OK;          /* constant record: no steady level */
+    /* still growing or decaying: the tail's halves, or the tail and the 20% before it, differ by
+     * more than 2 tol L (the halves: also more than 2 sigma) */
+    if (nl >= 2 && (fabs(m2 - m1) > fmax(2 * tol * L, 2 * sd) || fabs(mt - m0) > 2 * tol * L)) {
+        *t_steady = (double)(n - nl) * dt;
+        return GAL_OK;
+    }
+    /* steady from the first time the envelope reaches the band of its final fluctuation
+     * (L +- max(tol L, 5 sigma), sigma the tail's robust spread: noise, beating lines), and after
+     * the last time it rose above it (an overshoot): a stationary record is steady from the start */
     size_t guard = n / 50, end = n - guard;               /* the last 2% are not judged */
-    size_t first = 0;                                     /* first sample of the final run */
-    for (size_t j = end; j-- > 0;)
-        if (fabs(env[j] - L) > tol * L) {
+    size_t first = 0;
+    while (first < end && env[first] < lo) first++;
+    for (size_t j = end; j-- > first;)
+        if (env[j] > hi) {
             first = j + 1;
             break;
         }

@@ -114,11 +114,16 @@ int gal_sim_measure(const gal_sim_result *r, int k, double from, gal_sim_measure
     if (n - i0 < 64) i0 = n - 64;
     m->steady_from_s = i0 * dt;
     int st = window_measures(r, k, i0, x, m);
-    m->tension_min = INFINITY, m->tension_max = -INFINITY;
+    m->tension_min = m->tension_min_steady = INFINITY;
+    m->tension_max = m->tension_max_steady = -INFINITY;
     for (long i = 0; i < n; i++)
         for (int s = 0; s < 2; s++) {
-            m->tension_min = fmin(m->tension_min, r->tension[2 * i + s]);
-            m->tension_max = fmax(m->tension_max, r->tension[2 * i + s]);
+            double T = r->tension[2 * i + s];
+            m->tension_min = fmin(m->tension_min, T);
+            m->tension_max = fmax(m->tension_max, T);
+            if (i < i0) continue;
+            m->tension_min_steady = fmin(m->tension_min_steady, T);
+            m->tension_max_steady = fmax(m->tension_max_steady, T);
         }
     free(x);
     free(env);

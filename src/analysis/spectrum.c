@@ -193,6 +193,22 @@ int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double 
     return GAL_OK;
 }
 
+static int cmp_dbl(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double gal_spectrum_noise_floor(const double *psd, size_t nfreq, size_t k, double *scratch)
+{
+    size_t w = nfreq / 16 > GAL_SPECTRUM_FLOOR_HALFWIDTH ? nfreq / 16 : GAL_SPECTRUM_FLOOR_HALFWIDTH;
+    size_t a = k > w ? k - w : 1, b = k + w < nfreq ? k + w : nfreq - 1, m = 0;
+    if (a >= nfreq) return 0;
+    for (size_t q = a; q <= b; q++) scratch[m++] = psd[q];
+    qsort(scratch, m, sizeof *scratch, cmp_dbl);
+    return m % 2 ? scratch[m / 2] : 0.5 * (scratch[m / 2 - 1] + scratch[m / 2]);
+}
+
 int gal_spectrum_peaks(const double *psd, size_t nfreq, double df, const double *x, size_t n,
                        double dt, size_t kmax, gal_peak *peaks, size_t *npeaks)
 {
@@ -203,11 +219,15 @@ int gal_spectrum_peaks(const double *psd, size_t nfreq, double df, const double 
     for (size_t k = 1; k < nfreq; k++)
         if (psd[k] > pmax) pmax = psd[k];
     if (!(pmax > 0)) return GAL_OK;
-    size_t np = 0;
-    /* the kmax largest local maxima, kept sorted by decreasing PSD (insertion) */
+    size_t np = 0, hw = nfreq / 16 > GAL_SPECTRUM_FLOOR_HALFWIDTH ? nfreq / 16 : GAL_SPECTRUM_FLOOR_HALFWIDTH;
+    double *scratch = malloc((2 * hw + 1) * sizeof *scratch);
+    if (!scratch) return gal_error(GAL_ENOMEM, "out of memory");
+    /* the kmax largest local maxima standing GAL_SPECTRUM_PEAK_SNR above the local noise floor,
+     * kept sorted by decreasing PSD (insertion) */
     for (size_t k = 1; k + 1 < nfreq; k++) {
         if (!(psd[k] > psd[k - 1] && psd[k] >= psd[k + 1])) continue;
         if (psd[k] < GAL_SPECTRUM_PEAK_FLOOR * pmax) continue;
+        if (psd[k] < GAL_SPECTRUM_PEAK_SNR * gal_spectrum_noise_floor(psd, nfreq, k, scratch)) continue;
         size_t pos = np;
         while (pos > 0 && peaks[pos - 1].psd < psd[k]) pos--;
         if (pos >= kmax) continue;
@@ -217,6 +237,7 @@ int gal_spectrum_peaks(const double *psd, size_t nfreq, double df, const double 
         peaks[pos].bin = k;
         if (np < kmax) np++;
     }
+    free(scratch);
     for (size_t q = 0; q < np; q++) {
         double f0 = (double)peaks[q].bin * df;
         int st = gal_spectrum_refine(x, n, dt, f0, 0.6 * df, &peaks[q].frequency,
@@ -256,6 +277,15 @@ int gal_spectrum_measure(gal_welch *w, const double *x, size_t n, double dt, siz
     if (m->npeaks > 0) {
         m->frequency = m->peaks[0].frequency;
         m->amplitude = m->peaks[0].amplitude;
+    } else {
+        /* no line above the noise floor: the dominant frequency is still the largest local
+         * maximum (m->npeaks = 0 says it is not significant) */
+        size_t kb = 0;
+        for (size_t k = 1; k + 1 < w->nfreq; k++)
+            if (p[k] > p[k - 1] && p[k] >= p[k + 1] && (kb == 0 || p[k] > p[kb])) kb = k;
+        if (kb > 0 && (st = gal_spectrum_refine(x, n, dt, (double)kb * df, 0.6 * df, &m->frequency,
+                                                &m->amplitude)))
+            return st;
     }
     return GAL_OK;
 }

@@ -8,6 +8,7 @@
 #include "cli.h"
 #include "gallop.h"
 #include "gallop/model/tables.h"
+#include "gallop/output/outset.h"
 #include "gallop/scene/scene.h"
 
 static int usage_error(const gal_cli_command *c, const char *what, const char *arg)
@@ -122,6 +123,11 @@ int gal_cli_scene(const gal_cli_command *c, const gal_cli_args *a, gal_scene *sc
         if (!*dir || strlen(dir) >= sizeof sc->output.directory)
             return usage_error(c, "-o: directory name empty or too long:", dir);
         strcpy(sc->output.directory, dir);
+    }
+    /* the output directory is checked now, before any computation (issue 14) */
+    if ((st = gal_outset_check(sc->output.directory)) != GAL_OK) {
+        fprintf(stderr, "gallop %s: %s\n", c->name, gal_error_message());
+        return 2;
     }
     if (outdir) *outdir = sc->output.directory;
     return 0;

@@ -82,6 +82,7 @@ int gal_cli_simulate(int argc, char **argv)
     memset(&r, 0, sizeof r);
     int st = setup(&sc, &m, &d);
     if (!st && !T) T = gal_integrator_reduced_of(m);
+    if (!st) st = gal_run_check_measurable(m, d, &o); /* before the run */
     if (!st) st = gal_run(m, d, T, &o, &r);
     gal_sim_measures ms;
     if (!st) st = gal_sim_measure(&r, gal_sim_mid_probe(&r), -1, &ms);
@@ -111,6 +112,7 @@ int gal_cli_compare(int argc, char **argv)
     memset(&full, 0, sizeof full);
     memset(&red, 0, sizeof red);
     int st = setup(&sc, &m, &d);
+    if (!st) st = gal_run_check_measurable(m, d, &o); /* before the runs */
     if (!st) st = gal_run(m, d, &gal_integrator_full, &o, &full);
     int red_failed = 0;
     if (!st && (red_failed = gal_run(m, d, gal_integrator_reduced_of(m), &o, &red)) != GAL_OK) {

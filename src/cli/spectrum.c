@@ -145,6 +145,14 @@ int gal_cli_spectrum(int argc, char **argv)
         gal_cli_usage(stderr, c);
         return 2;
     }
+    char *outdir = st ? NULL : output_dir(&o);
+    if (!st && !outdir) st = gal_error(GAL_ENOMEM, "out of memory");
+    if (!st && (st = gal_outset_check(outdir)) != GAL_OK) { /* before any computation */
+        fprintf(stderr, "gallop spectrum: -o: %s\n", gal_error_message());
+        free(outdir);
+        return 2;
+    }
+    free(outdir);
     if (!st) st = gal_trace_read(o.path, &tr);
     if (!st) st = run(&o, tr, t_start);
     gal_trace_free(tr);

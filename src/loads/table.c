@@ -15,6 +15,7 @@
 #define CLOSE_TOL 1e-9      /* periodic closure: last row = first row + 360 within this */
 #define MIN_STEP_DEG 1e-6   /* two angles closer than this are treated as duplicates */
 #define MAX_ALPHA_DEG 720.0 /* |alpha_deg| allowed */
+#define FINE 64             /* interpolant checked at this many points per interval between rows */
 
 const char *const gal_aero_coef_name[3] = {"cd", "cl", "cm"};
 
@@ -136,6 +137,46 @@ nomem:
     return gal_aero_table_free(t);
 }
 
+/* The interpolant between rows: on FINE points per interval, every coefficient within the rows'
+ * bound GAL_AERO_MAX_COEF and every slope within GAL_AERO_MAX_SLOPE (aero.h); else the message
+ * names the two rows of the interval where the bound is exceeded most (an overshooting periodic
+ * spline rings over the whole period, worst next to the rows too close for their values).
+ * Interval k runs from row k to row k + 1 (the last to the closure: the first row, or the
+ * closure row when given). */
+static int check_interpolant(const gal_aero_table *t, const char *name, int rows, const int *line,
+                             int given)
+{
+    double worst = 1, wv = 0, wx = 0;
+    int wk = -1, wi = 0, wslope = 0;
+    for (int k = 0; k + 1 < t->n; k++) {
+        double h = t->alpha[k + 1] - t->alpha[k];
+        for (int j = 0; j <= FINE; j++) {
+            double x = j == FINE ? t->alpha[k + 1] : t->alpha[k] + h * j / FINE;
+            for (int i = 0; i < 3; i++) {
+                double v[2] = {gsl_interp_eval(t->spline[i], t->alpha, t->c[i], x, NULL),
+                               gsl_interp_eval_deriv(t->spline[i], t->alpha, t->c[i], x, NULL)};
+                for (int d = 0; d < 2; d++) {
+                    double r = fabs(v[d]) / (d ? GAL_AERO_MAX_SLOPE : GAL_AERO_MAX_COEF);
+                    if (!isfinite(r)) r = INFINITY;
+                    if (r > worst) worst = r, wv = v[d], wx = x, wk = k, wi = i, wslope = d;
+                }
+            }
+        }
+    }
+    if (wk < 0) return GAL_OK;
+    char a0[1200], a1[1200];
+    int r1 = wk + 1 < t->n - 1 ? wk + 1 : (given ? rows - 1 : 0);
+    where(a0, sizeof a0, name, line, wk);
+    where(a1, sizeof a1, name, line, r1);
+    const char *c = gal_aero_coef_name[wi];
+    return gal_error(GAL_EINPUT, "%s and %s: between these rows (alpha_deg %.9g to %.9g) the periodic "
+                     "spline of %s reaches %s%s = %.3g%s at alpha_deg = %.9g; allowed between rows as "
+                     "at them: |%s| <= %g, |d%s/dalpha| <= %g per rad; the rows are too close for "
+                     "their values (the spline overshoots): space the angles or smooth the data",
+                     a0, a1, t->alpha[wk] / DEG, t->alpha[wk + 1] / DEG, c, wslope ? "d" : "", c,
+                     wv, wslope ? "/dalpha" : "", wx / DEG, c, GAL_AERO_MAX_COEF, c, GAL_AERO_MAX_SLOPE);
+}
+
 gal_aero_table *gal_aero_table_build(const char *name, const char *source, int rows,
                                      const double *adeg, const double *cd, const double *cl,
                                      const double *cm, const int *line, const int *col, int *status)
@@ -143,6 +184,7 @@ gal_aero_table *gal_aero_table_build(const char *name, const char *source, int r
     const double *const cv[3] = {cd, cl, cm};
     int given;
     *status = GAL_EINPUT;
+    gal_gsl_errors_install(); /* GSL errors as gallop errors, never an abort */
     if (!source || !source[0]) {
         gal_error(GAL_EINPUT, "%s: no '# source:' comment line: every table must say where its "
                   "numbers come from", name);
@@ -151,7 +193,12 @@ gal_aero_table *gal_aero_table_build(const char *name, const char *source, int r
     if (check_rows(name, rows, adeg, cv, line, col) != GAL_OK ||
         check_period(name, rows, adeg, cv, line, col, &given) != GAL_OK)
         return NULL;
-    return splines(name, source, given ? rows - 1 : rows, adeg, cv, status);
+    gal_aero_table *t = splines(name, source, given ? rows - 1 : rows, adeg, cv, status);
+    if (t && check_interpolant(t, name, rows, line, given) != GAL_OK) {
+        *status = GAL_EINPUT;
+        return gal_aero_table_free(t);
+    }
+    return t;
 }
 
 gal_aero_table *gal_aero_table_make(const char *name, const char *source, int n,

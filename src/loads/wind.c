@@ -144,6 +144,7 @@ gal_wind *gal_wind_free(gal_wind *w)
 gal_wind *gal_wind_alloc(const gal_wind_params *p)
 {
     if (gal_wind_params_check(p) != GAL_OK) return NULL;
+    gal_gsl_errors_install(); /* GSL errors as gallop errors, never an abort */
     gal_wind *w = calloc(1, sizeof *w);
     if (!w) goto nomem;
     w->p = *p;

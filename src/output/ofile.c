@@ -63,6 +63,7 @@ int gal_ofile_close(gal_ofile *f, int ok)
 
 int gal_mkdirs(const char *path)
 {
+    if (!path || !*path) return gal_error(GAL_EIO, "cannot create a directory of an empty name");
     char *p = strdup(path);
     if (!p) return gal_error(GAL_ENOMEM, "out of memory");
     for (char *s = p + 1; ; s++) {

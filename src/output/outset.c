@@ -36,12 +36,91 @@ static int prepare_dir(const char *dir)
     return st;
 }
 
+int gal_outset_check(const char *dir)
+{
+    if (!dir || !*dir) return gal_error(GAL_EINPUT, "output directory: empty name; allowed: a path");
+    char *p = strdup(dir);
+    if (!p) return gal_error(GAL_ENOMEM, "out of memory");
+    int st = GAL_OK, missing = 0;
+    struct stat sb;
+    /* the path itself, else its nearest existing ancestor: a writable directory */
+    for (;;) {
+        if (stat(p, &sb) == 0) {
+            if (!S_ISDIR(sb.st_mode))
+                st = gal_error(GAL_EIO, "output directory %s: %s exists and is not a directory", dir, p);
+            else if (access(p, W_OK | X_OK) != 0)
+                st = gal_error(GAL_EIO, "output directory %s: %s is not writable: %s", dir, p, strerror(errno));
+            break;
+        }
+        if (errno != ENOENT) {
+            st = gal_error(GAL_EIO, "output directory %s: %s: %s", dir, p, strerror(errno));
+            break;
+        }
+        missing = 1;
+        char *slash = strrchr(p, '/');
+        while (slash && slash > p && slash[1] == '\0') *slash = '\0', slash = strrchr(p, '/'); /* trailing '/' */
+        if (!slash) { strcpy(p, "."); continue; }
+        if (slash == p) { p[1] = '\0'; continue; }
+        *slash = '\0';
+    }
+    free(p);
+    if (st || missing) return st;
+    /* an existing directory: its summary.json, if any, must be gallop's */
+    char *path = gal_path_join(dir, "summary.json");
+    outset_owned old;
+    if (!path) return gal_error(GAL_ENOMEM, "out of memory");
+    st = gal_outset_read_owned(path, &old);
+    if (!st && old.kind == OWNED_FOREIGN)
+        st = gal_error(GAL_EIO, "%s exists and was not written by gallop: gallop replaces only its own files; "
+                       "move it away or choose another directory with -o", path);
+    free(path);
+    return st;
+}
+
+/* The highest component of dir that does not exist yet (malloc'ed; NULL when dir exists): the
+ * directory gal_mkdirs makes first, removed again if the set is never committed. */
+static char *first_missing(const char *dir)
+{
+    struct stat sb;
+    if (stat(dir, &sb) == 0) return NULL;
+    char *p = strdup(dir);
+    if (!p) return NULL;
+    for (size_t i = 1; p[i]; i++) {
+        if (p[i] != '/') continue;
+        p[i] = '\0';
+        if (stat(p, &sb) != 0) return p;
+        p[i] = '/';
+    }
+    return p;
+}
+
+/* Remove the empty directories between dir and made (both included; rmdir fails on a non-empty
+ * one, which stops the walk). */
+static void remove_made(const char *dir, const char *made)
+{
+    char *p = made ? strdup(dir) : NULL;
+    size_t lm = made ? strlen(made) : 0;
+    while (p && strlen(p) >= lm && rmdir(p) == 0) {
+        char *slash = strrchr(p, '/');
+        if (!slash || strlen(p) == lm) break;
+        *slash = '\0';
+    }
+    free(p);
+}
+
 int gal_outset_begin(gal_outset **set, const char *dir, const char *command)
 {
     *set = NULL;
-    int st = gal_mkdirs(dir);
+    int st = gal_outset_check(dir);
     if (st) return st;
-    if ((st = prepare_dir(dir))) return st;
+    char *made = first_missing(dir);
+    st = gal_mkdirs(dir);
+    if (!st) st = prepare_dir(dir);
+    if (st) {
+        remove_made(dir, made);
+        free(made);
+        return st;
+    }
     gal_outset *o = calloc(1, sizeof *o);
     char name[64];
     snprintf(name, sizeof name, OUTSET_STAGE_PREFIX "%ld.%u", (long)getpid(), atomic_fetch_add(&stage_count, 1));
@@ -49,12 +128,16 @@ int gal_outset_begin(gal_outset **set, const char *dir, const char *command)
     if (!o || !o->dir || !o->stage) {
         if (o) free(o->dir), free(o->stage);
         free(o);
+        remove_made(dir, made);
+        free(made);
         return gal_error(GAL_ENOMEM, "out of memory");
     }
+    o->made = made;
     snprintf(o->command, sizeof o->command, "%s", command);
     if (mkdir(o->stage, 0700) != 0) {
         st = gal_error(GAL_EIO, "%s: cannot create the staging directory: %s", o->stage, strerror(errno));
-        free(o->dir), free(o->stage), free(o);
+        remove_made(dir, made);
+        free(o->dir), free(o->stage), free(o->made), free(o);
         return st;
     }
     *set = o;
@@ -209,7 +292,11 @@ gal_outset *gal_outset_free(gal_outset *o)
     if (o->summary) fclose(o->summary);
     for (int i = 0; i < o->nfiles; i++)
         if (o->file[i].fp) fclose(o->file[i].fp);
-    if (!o->committed && !o->journal) gal_outset_remove_stage(o->stage);
+    if (!o->committed && !o->journal) {
+        gal_outset_remove_stage(o->stage);
+        remove_made(o->dir, o->made); /* no empty directory left by a run that wrote nothing */
+    }
+    free(o->made);
     free(o->dir);
     free(o->stage);
     free(o);

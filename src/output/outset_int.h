@@ -23,6 +23,7 @@ typedef struct outset_file {
 struct gal_outset {
     char *dir;        /* DIR */
     char *stage;      /* DIR/.gallop-staging.<pid>.<n> */
+    char *made;       /* the highest directory of DIR gal_outset_begin made, or NULL */
     char command[32];
     char input_key[32];
     uint64_t input_hash;

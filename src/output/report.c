@@ -90,7 +90,10 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_equilibri
     gal_json_kv_num(j, "unstretched_length_m", eq->unstretched_length);
     gal_json_kv_num(j, "tension_left_n", eq->tension_left);
     gal_json_kv_num(j, "tension_right_n", eq->tension_right);
-    gal_json_kv_num(j, "tension_max_n", eq->tension_max);
+    /* the largest tension: at a support or in an element (the support tensions are the
+     * reactions, which hold the end elements' shear too); the elements' own largest apart */
+    gal_json_kv_num(j, "tension_max_n", fmax(fmax(eq->tension_left, eq->tension_right), eq->tension_max));
+    gal_json_kv_num(j, "element_tension_max_n", eq->tension_max);
     gal_json_kv_int(j, "elements", eq->rod->p.elements);
     gal_json_kv_int(j, "dofs", eq->rod->ndof);
     gal_json_kv_int(j, "newton_iterations", eq->newton_iterations);

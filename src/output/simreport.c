@@ -58,8 +58,13 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     gal_json_kv_num(j, "twist_amplitude_deg", mid->peak_to_peak[3]);
     gal_json_kv_num(j, "time_to_steady_s", mid->time_to_steady_s);
     gal_json_kv_num(j, "rise_time_90_s", mid->rise_time_s);
+    /* the support tensions: tension_*_n are the whole run's (measure.h) */
     gal_json_kv_num(j, "tension_min_n", mid->tension_min);
     gal_json_kv_num(j, "tension_max_n", mid->tension_max);
+    gal_json_kv_num(j, "tension_min_run_n", mid->tension_min);
+    gal_json_kv_num(j, "tension_max_run_n", mid->tension_max);
+    gal_json_kv_num(j, "tension_min_steady_n", mid->tension_min_steady);
+    gal_json_kv_num(j, "tension_max_steady_n", mid->tension_max_steady);
     gal_json_key(j, "counters");
     gal_json_obj_begin(j);
     gal_json_kv_int(j, "steps", r->steps);
@@ -117,6 +122,15 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
     return gal_cigre_json_run(j, sc, r, from, NAN);
 }
 
+/* Decimals of the time stamps: at least 6, and enough that consecutive samples dt_out apart
+ * never print alike (a hundredth of the interval resolved). */
+static int time_decimals(double dt_out)
+{
+    int d = 6;
+    while (d < 17 && !(dt_out * pow(10.0, d) >= 100.0)) d++;
+    return d;
+}
+
 /* the trace of a run, one line per sample */
 static void trace_csv(FILE *fp, const gal_sim_result *res)
 {
@@ -126,8 +140,9 @@ static void trace_csv(FILE *fp, const gal_sim_result *res)
         fprintf(fp, ",p%g_horizontal_m,p%g_vertical_m,p%g_along_m,p%g_twist_deg", a, a, a, a);
     }
     fprintf(fp, ",tension_left_n,tension_right_n\n");
+    int td = time_decimals(res->dt_out);
     for (long i = 0; i < res->nsamples; i++) {
-        fprintf(fp, "%.6f", res->time[i]);
+        fprintf(fp, "%.*f", td, res->time[i]);
         for (int c = 0; c < 4 * res->nprobe; c++) fprintf(fp, ",%.8g", res->trace[(size_t)i * 4 * res->nprobe + c]);
         fprintf(fp, ",%.8g,%.8g\n", res->tension[2 * i], res->tension[2 * i + 1]);
     }
@@ -189,7 +204,7 @@ static int write_compare_csv(gal_outset *o, const gal_sim_result *full, const ga
     long n = full->nsamples < red->nsamples ? full->nsamples : red->nsamples;
     for (long i = 0; i < n; i++) {
         const double *a = full->trace + (size_t)i * wf + 4 * kf, *b = red->trace + (size_t)i * wr + 4 * kr;
-        fprintf(fp, "%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", full->time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
+        fprintf(fp, "%.*f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", time_decimals(full->dt_out), full->time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
     }
     return gal_outset_close(o, fp);
 }

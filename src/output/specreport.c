@@ -1,11 +1,12 @@
-/* specreport.c: the outputs of `gallop spectrum` (specreport.h): psd.csv, summary.json and the
- * table on stdout. */
+/* specreport.c: the outputs of `gallop spectrum` (specreport.h): psd.csv (one-sided PSD, each
+ * column named with its unit squared per Hz), summary.json and the table on stdout. */
 #include "gallop/output/specreport.h"
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
 #include "gallop/output/outset.h"
 
 #include <math.h>
+#include <string.h>
 
 static void fmt(char *buf, size_t n, double v)
 {
@@ -13,12 +14,29 @@ static void fmt(char *buf, size_t n, double v)
     else snprintf(buf, n, "none");
 }
 
+/* The psd.csv column of a trace column: its unit squared per Hz. A name ending in a unit suffix
+ * (_m, _deg, _n, _rad) gets that unit's "<u>2_per_hz" (p0.5_vertical_m -> p0.5_vertical_m2_per_hz);
+ * any other name "_psd" (mid_y -> mid_y_psd: the column's unit squared per Hz). */
+static void psd_name(FILE *fp, const char *name)
+{
+    static const char *const units[] = {"_m", "_deg", "_n", "_rad"};
+    size_t ln = strlen(name);
+    for (size_t u = 0; u < sizeof units / sizeof units[0]; u++) {
+        size_t lu = strlen(units[u]);
+        if (ln > lu && !strcmp(name + ln - lu, units[u])) {
+            fprintf(fp, ",%s2_per_hz", name);
+            return;
+        }
+    }
+    fprintf(fp, ",%s_psd", name);
+}
+
 static int write_psd(gal_outset *o, const gal_trace *tr, const gal_trace_spectrum *s)
 {
     FILE *fp = gal_outset_open(o, "psd.csv");
     if (!fp) return GAL_EIO;
     fprintf(fp, "frequency_hz");
-    for (size_t c = 0; c < s->nsel; c++) fprintf(fp, ",%s", tr->names[s->sel[c]]);
+    for (size_t c = 0; c < s->nsel; c++) psd_name(fp, tr->names[s->sel[c]]);
     fputc('\n', fp);
     for (size_t k = 0; k < s->nf; k++) {
         fprintf(fp, "%.10g", (double)k * s->df);

@@ -71,7 +71,10 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     if (!(h > 0)) h = fmin(dt_out, 1.0 / (40 * fhi));
     int sub = (int)ceil(dt_out / h - 1e-9);
     res->dt_out = dt_out;
-    long ns = res->nsamples = (long)floor(sc->simulation.duration / dt_out + 1e-9) + 1;
+    long ns;
+    int sst = gal_scene_sample_count(sc, sc->simulation.duration, dt_out, 1, &ns); /* bounded */
+    if (sst) return sst;
+    res->nsamples = ns;
     res->time = malloc((size_t)ns * sizeof(double));
     res->trace = calloc((size_t)ns * 4 * res->nprobe, sizeof(double));
     res->tension = calloc((size_t)ns * 2, sizeof(double));

@@ -51,7 +51,9 @@ static int result_alloc(const gal_model *m, const gal_integrator_type *T, const 
     res->nprobe = m->nprobe;
     memcpy(res->probe, m->probe, sizeof res->probe);
     res->dt_out = dt_out;
-    long ns = (long)floor(o->duration / dt_out + 1e-9) + 1;
+    long ns; /* bounded: no cast overflow */
+    int st = gal_scene_sample_count(&m->sc, o->duration, dt_out, 1, &ns);
+    if (st) return st;
     res->nsamples = ns;
     res->time = malloc((size_t)ns * sizeof(double));
     res->trace = calloc((size_t)ns * 4 * m->nprobe, sizeof(double));
@@ -73,6 +75,16 @@ static int integrate(const gal_integrator_type *T, void *state, gal_sim_result *
         if (tty && i % 200 == 0) fprintf(stderr, "\r%s model: t = %.1f of %.1f s", T->name, res->time[i], res->time[ns - 1]);
     }
     if (tty) fprintf(stderr, "\n");
+    return st;
+}
+
+int gal_run_check_measurable(const gal_model *m, gal_data *d, const gal_run_opts *o)
+{
+    double dt_out, fhi;
+    long ns;
+    int st = gal_forward(m, d, GAL_STAGE_MODES);
+    if (!st) st = sampling(m, d, o, &dt_out, &fhi);
+    if (!st) st = gal_scene_sample_count(&m->sc, o->duration, dt_out, GAL_SCENE_MIN_SAMPLES, &ns);
     return st;
 }
 
@@ -130,6 +142,11 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
 {
     gal_run_opts o;
     gal_run_opts_from_scene(s->sc, &o);
+    int st = gal_run_check_measurable(s->model, s->data, &o);
+    if (st) {
+        memset(res, 0, sizeof *res);
+        return st;
+    }
     return gal_run(s->model, s->data, kind == GAL_MODEL_FULL ? &gal_integrator_full : gal_integrator_reduced_of(s->model),
                    &o, res);
 }

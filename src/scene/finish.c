@@ -170,6 +170,48 @@ static int conductor_and_ice(pstate *ps)
     return scn_ice(ps);
 }
 
+/* The sizes computed from [simulation]'s doubles (scene.h): samples and steps within bounds. */
+static int sim_sizes(pstate *ps)
+{
+    const gal_scene *sc = ps->sc;
+    double T = sc->simulation.duration, dto = sc->simulation.output_interval, h = sc->simulation.time_step;
+    if (dto > 0 && dto < GAL_SCENE_MIN_OUTPUT_INTERVAL)
+        return scn_kfail(ps, K_OUTDT, "too small; allowed: 0 (chosen) or %g <= output_interval <= 10 s",
+                     GAL_SCENE_MIN_OUTPUT_INTERVAL);
+    if (dto > 0 && T / dto > (double)GAL_SCENE_MAX_SAMPLES)
+        return scn_kfail(ps, K_OUTDT, "%.3g samples over the duration (%g s); allowed: 0 (chosen) or "
+                     "output_interval >= duration / %ld = %g s", T / dto, T, GAL_SCENE_MAX_SAMPLES,
+                     T / (double)GAL_SCENE_MAX_SAMPLES);
+    if (dto > 0 && T / dto + 1e-9 < (double)(GAL_SCENE_MIN_SAMPLES - 1))
+        return scn_kfail(ps, K_DUR, "too short to measure: %ld samples at output_interval = %g s; allowed: "
+                     "duration >= %g s (%ld samples)", (long)floor(T / dto + 1e-9) + 1, dto,
+                     (GAL_SCENE_MIN_SAMPLES - 1) * dto, GAL_SCENE_MIN_SAMPLES);
+    if (h > 0 && h < GAL_SCENE_MIN_TIME_STEP)
+        return scn_kfail(ps, K_DT, "too small; allowed: 0 (chosen) or %g <= time_step <= duration s",
+                     GAL_SCENE_MIN_TIME_STEP);
+    if (h > 0 && T / h > (double)GAL_SCENE_MAX_STEPS)
+        return scn_kfail(ps, K_DT, "%.3g steps over the duration (%g s); allowed: 0 (chosen) or "
+                     "time_step >= duration / %ld = %g s", T / h, T, GAL_SCENE_MAX_STEPS,
+                     T / (double)GAL_SCENE_MAX_STEPS);
+    return 1;
+}
+
+int gal_scene_sample_count(const gal_scene *sc, double duration, double dt_out, long min_samples, long *ns)
+{
+    double T = duration, n = floor(T / dt_out + 1e-9) + 1;
+    *ns = 0;
+    if (!(dt_out > 0) || !(n <= (double)GAL_SCENE_MAX_SAMPLES))
+        return gal_error(GAL_EINPUT, "%s: [simulation] output_interval = %g s: %.3g samples over the "
+                         "duration (%g s); allowed: at most %ld samples", sc->path, dt_out, n, T,
+                         GAL_SCENE_MAX_SAMPLES);
+    if (n < (double)min_samples)
+        return gal_error(GAL_EINPUT, "%s: [simulation] duration = %g s: too short to measure: %.0f "
+                         "samples at the output interval %g s; allowed: duration >= %g s (%ld "
+                         "samples)", sc->path, T, n, dt_out, (double)(min_samples - 1) * dt_out, min_samples);
+    *ns = (long)n;
+    return GAL_OK;
+}
+
 /* Wind and simulation checks, the output directory, the effects: on where the scene has the
  * data; an explicit "on" without it is an error. */
 static int wind_and_effects(pstate *ps)
@@ -206,5 +248,5 @@ int scn_finish(pstate *ps, const char *csv_given)
         if (!scn_load_conductor(ps, csv)) return 0;
     }
     return required_keys(ps) && span_checks(ps) && stringing_checks(ps) && conductor_and_ice(ps) &&
-           scn_wind_profile(ps) && wind_and_effects(ps);
+           scn_wind_profile(ps) && wind_and_effects(ps) && sim_sizes(ps);
 }

@@ -292,6 +292,7 @@ int gal_scene_load(gal_scene *sc, const char *path, const char *const *overrides
                    const char *conductors_csv)
 {
     if (!sc || !path) return gal_error(GAL_EINPUT, "gal_scene_load: no scene given");
+    gal_gsl_errors_install(); /* GSL errors as gallop errors, never an abort */
     defaults(sc);
     if (!*path || strlen(path) >= sizeof sc->path)
         return gal_error(GAL_EINPUT, "%.64s...: scene path empty or too long; allowed: 1 to %d "

@@ -295,6 +295,16 @@ static int apply_probes(kv *a)
             return bad(a, GAL_EINPUT, "'%s' is not a number; allowed: %s", item, al);
         if (!(p[np] > 0 && p[np] < 1))
             return bad(a, GAL_EINPUT, "%s is out of range; allowed: %s", item, al);
+        /* the trace names its columns p<%g of the probe>_...: those must not repeat */
+        char me[32], other[32];
+        snprintf(me, sizeof me, "%g", p[np]);
+        for (int j = 0; j < np; j++) {
+            snprintf(other, sizeof other, "%g", p[j]);
+            if (!strcmp(me, other))
+                return bad(a, GAL_EINPUT, "probe %d (%s) repeats probe %d (%s): the trace's column "
+                           "names would repeat; allowed: distinct probes (in their first 6 digits)",
+                           np + 1, item, j + 1, other);
+        }
         np++;
         if (!c) break;
         s = c + 1;

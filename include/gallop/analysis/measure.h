@@ -17,7 +17,13 @@ typedef struct gal_sim_measures {
     double peak_to_peak[4];       /* m, m, m, deg */
     double rms[4], mean[4];
     double orbit_major, orbit_minor, orbit_tilt_deg; /* m, m, deg */
-    double tension_min, tension_max;                 /* N, supports */
+    /* the support tensions (the end elements' tensions, trace.csv tension_left_n/right_n), the
+     * smallest and largest of both supports: over the whole run, and over the steady window
+     * [steady_from_s, end] the other measures are taken over (summary.json: tension_min_run_n,
+     * tension_max_run_n, tension_min_steady_n, tension_max_steady_n; tension_min_n and
+     * tension_max_n are the whole run's) */
+    double tension_min, tension_max;                 /* N, whole run */
+    double tension_min_steady, tension_max_steady;   /* N, steady window */
 } gal_sim_measures;
 
 /* Measures at probe k over the steady part (from `from` s, or detected when from < 0). */

@@ -76,6 +76,14 @@ int gal_spectrum_psd(gal_welch *w, const double *x, size_t n, double dt, double 
 
 #define GAL_SPECTRUM_MAX_PEAKS 8
 #define GAL_SPECTRUM_PEAK_FLOOR 1e-4   /* peaks below this fraction of the largest PSD are dropped */
+/* A peak counts only where its PSD stands this factor (10 dB) above the local noise floor: the
+ * median of the PSD over +-max(GAL_SPECTRUM_FLOOR_HALFWIDTH, nfreq/16) bins around it. White
+ * noise alone exceeds it rarely: about one bin in a thousand for a single Welch segment, far
+ * fewer with the usual 8 or more segments averaged. */
+#define GAL_SPECTRUM_PEAK_SNR 10.0
+#define GAL_SPECTRUM_FLOOR_HALFWIDTH 16
+/* The local noise floor of psd at bin k (the median above); scratch holds 2 max(16, nfreq/16) + 1. */
+double gal_spectrum_noise_floor(const double *psd, size_t nfreq, size_t k, double *scratch);
 
 typedef struct gal_peak {
     double frequency;   /* Hz, refined below the bin width (see gal_spectrum_refine) */
@@ -96,7 +104,8 @@ int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double 
                         double *f, double *amplitude);
 
 /* The (at most kmax <= GAL_SPECTRUM_MAX_PEAKS) largest local maxima of psd[1..nfreq-1) above
- * GAL_SPECTRUM_PEAK_FLOOR times the largest, in decreasing PSD, each refined by
+ * GAL_SPECTRUM_PEAK_FLOOR times the largest and GAL_SPECTRUM_PEAK_SNR times the local noise
+ * floor, in decreasing PSD, each refined by
  * gal_spectrum_refine on x[0..n) within +-0.6 df. *npeaks may be 0 (e.g. a constant record). */
 int gal_spectrum_peaks(const double *psd, size_t nfreq, double df, const double *x, size_t n,
                        double dt, size_t kmax, gal_peak *peaks, size_t *npeaks);
@@ -106,7 +115,8 @@ typedef struct gal_measures {
     double mean;          /* unit of x */
     double rms;           /* RMS of x - mean */
     double peak_to_peak;  /* max - min */
-    double frequency;     /* dominant frequency, Hz; NaN when there is none (constant record) */
+    double frequency;     /* dominant frequency, Hz: peaks[0], or with npeaks = 0 the largest local
+                           * maximum of the PSD (not significant); NaN for a constant record */
     double amplitude;     /* spectral amplitude of the dominant sine; NaN when none */
     size_t npeaks;
     gal_peak peaks[GAL_SPECTRUM_MAX_PEAKS];   /* peaks[0] is the dominant one */
@@ -151,11 +161,17 @@ gal_hilbert *gal_spectrum_hilbert_free(gal_hilbert *h);
  * dominant oscillation (band = 2 is GAL_SPECTRUM_ENVELOPE_BAND); band <= 0 keeps every frequency. */
 int gal_spectrum_envelope(gal_hilbert *h, const double *x, double band, double *env);
 
-/* Time to steady: final level L = median of env over the last 20% of the record; the result
- * *t_steady (s, from the first sample) is the first time after which |env - L| <= tol L
- * (tol = 0.05 for the usual 5%) up to the end guard (the last 2% of the record, where the
- * envelope is least reliable). 0 when it holds from the start. *t_steady = NaN when L = 0
- * (constant record). *level (may be NULL) receives L. */
+/* Time to steady: final level L = median of env over the last 20% of the record, sigma = 1.4826
+ * times the median absolute deviation from L there (the envelope's own fluctuation: noise,
+ * beating lines), the band L +- max(tol L, 5 sigma) (tol = 0.05 for the usual 5%). *t_steady
+ * (s, from the first sample) is the first time the envelope reaches the band, or later the time
+ * after its last rise above it (an overshoot), judged up to the end guard (the last 2% of the
+ * record, where the envelope is least reliable). A stationary record is steady from the start
+ * (0); a growing one from when its envelope reaches the band. *t_steady = NaN when L = 0
+ * (constant record). When the tail still trends (the means of its two halves differ by more
+ * than max(2 tol L, 2 sigma), or its mean and that of the 20% before it by more than 2 tol L:
+ * not steady yet), the start of the tail: the record's last 20%.
+ * *level (may be NULL) receives L. */
 int gal_spectrum_steady_time(const double *env, size_t n, double dt, double tol, double *t_steady,
                              double *level);
 

@@ -30,6 +30,12 @@ void gal_error_clear(void);
 /* Process exit status for a library status: 0, 1 (computation), 2 (input). */
 int gal_exit_code(int status);
 
+/* Make GSL's errors gallop errors (GAL_EFAIL with GSL's reason as the thread's message) instead
+ * of GSL's default, which aborts the process. Idempotent; the library calls it where it first
+ * uses GSL (scene loading, aerodynamic tables, wind fields): the library never aborts. It replaces
+ * GSL's process-wide handler: a program that sets its own calls gsl_set_error_handler after. */
+void gal_gsl_errors_install(void);
+
 /* Wall-clock seconds from an arbitrary origin (monotonic). */
 double gal_wall_time(void);
 

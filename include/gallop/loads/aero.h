@@ -28,8 +28,11 @@
  *   ...
  * alpha in degrees, strictly increasing; the rows span less than 360 degrees (the periodic
  * closure alpha_first + 360 is added) or exactly 360 with the last row equal to the first
- * (within 1e-9). At least 4 distinct angles; every value finite, |c| <= 10. `#` lines and blank
- * lines may appear anywhere. */
+ * (within 1e-9). At least 4 distinct angles; every value finite, |c| <= 10. The interpolant is
+ * checked too, on 64 points per interval between rows: the spline must stay within |c| <= 10
+ * with slopes |dc/dalpha| <= GAL_AERO_MAX_SLOPE; a table whose spline overshoots (rows too close
+ * for their values) is refused, naming the two rows. `#` lines and blank lines may appear
+ * anywhere. */
 #ifndef GALLOP_AERO_H
 #define GALLOP_AERO_H
 
@@ -40,6 +43,10 @@ extern "C" {
 #endif
 
 #define GAL_AERO_MAX_COEF 10.0   /* |C_D|, |C_L|, |C_M| above this are rejected as absurd */
+/* |dC/dalpha| (per radian) above this is rejected: 1 per degree, steeper than any measured
+ * section (an airfoil's lift slope is 2 pi per rad); the stability sweep samples H = dC_L/dalpha
+ * + C_D every degree and would miss a sign change of a steeper slope. */
+#define GAL_AERO_MAX_SLOPE 57.29577951308232
 
 /* Which loads gal_aero_load computes (bit flags; the effects aero_drag, aero_lift, aero_moment). */
 enum { GAL_AERO_DRAG = 1u, GAL_AERO_LIFT = 2u, GAL_AERO_MOMENT = 4u, GAL_AERO_ALL = 7u };

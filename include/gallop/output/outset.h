@@ -40,7 +40,13 @@ extern "C" {
 
 typedef struct gal_outset gal_outset;
 
-/* Begin the outputs of `command` in dir (made as by mkdir -p). GAL_EIO when dir cannot be made
+/* Check, before any computation, that dir can hold a run, without making anything: dir is a
+ * writable directory whose summary.json (if any) is gallop's, or it does not exist and its
+ * nearest existing ancestor is a writable directory (no component is a regular file).
+ * GAL_EINPUT for an empty name, GAL_EIO otherwise, with a message naming the path. */
+int gal_outset_check(const char *dir);
+/* Begin the outputs of `command` in dir (made as by mkdir -p; the directories it made are removed
+ * again when the set is freed uncommitted: a failed run leaves no empty directory). GAL_EIO when dir cannot be made
  * or written, or when dir/summary.json is not gallop's. *set is NULL on failure. */
 int gal_outset_begin(gal_outset **set, const char *dir, const char *command);
 /* What the run computed from: the resolved scene (scene_hash, record.h) or an input file

@@ -3,9 +3,11 @@
  * "option --from"), steady_samples, segment, segments, frequency_resolution_hz; columns: an
  * object per column with frequency_hz (null when none), peaks_hz, peak_amplitudes, amplitude (of
  * the dominant sine), amplitude_pp, rms, mean, time_to_steady_s (trace time from which the
- * envelope stays within 5% of its final level; null for a constant column); orbit (the first
+ * envelope reaches its final band, spectrum.h gal_spectrum_steady_time; null for a constant
+ * column or one still growing); peaks: only lines 10 dB above the local noise floor; orbit (the first
  * pair: y, z, major_semi_axis, minor_semi_axis, tilt_deg) when there is a pair, orbits (all
- * pairs); wall_time_s. psd.csv: frequency_hz then one PSD column (unit^2/Hz) per column. */
+ * pairs); wall_time_s. psd.csv: frequency_hz then one PSD column (unit^2/Hz) per column, named
+ * <column>2_per_hz for a unit suffix _m, _deg, _n, _rad (p0.5_vertical_m2_per_hz), else <column>_psd. */
 #ifndef GALLOP_OUTPUT_SPECREPORT_H
 #define GALLOP_OUTPUT_SPECREPORT_H
 

@@ -39,6 +39,10 @@ void gal_run_opts_from_scene(const gal_scene *sc, gal_run_opts *o);
 /* Run the model with integrator T: d forwarded to T->needs, samples every output interval from 0
  * to the duration. GAL_EINPUT when the output interval cannot resolve the highest selected mode;
  * the integrator's status when it fails. res is filled (free it with gal_sim_result_clear). */
+/* Before a run that will be measured (simulate, compare): the modes forwarded, the output
+ * interval chosen, and enough samples for the measures (GAL_SCENE_MIN_SAMPLES), else GAL_EINPUT
+ * naming [simulation] duration and the least allowed (issue 14: refused before the run). */
+int gal_run_check_measurable(const gal_model *m, gal_data *d, const gal_run_opts *o);
 int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const gal_run_opts *o,
             gal_sim_result *res);
 void gal_sim_result_clear(gal_sim_result *res);

@@ -159,6 +159,29 @@ typedef struct gal_scene {
     } output;
 } gal_scene;
 
+/* The bounds of the sizes computed from [simulation]'s doubles, checked when a scene is loaded
+ * (exit 2 with the file, line, key and allowed range):
+ *   output_interval: 0 (chosen) or >= GAL_SCENE_MIN_OUTPUT_INTERVAL, and at most
+ *                    GAL_SCENE_MAX_SAMPLES samples over the duration;
+ *   time_step:       0 (chosen) or >= GAL_SCENE_MIN_TIME_STEP, and at most GAL_SCENE_MAX_STEPS
+ *                    steps over the duration;
+ *   duration:        at least GAL_SCENE_MIN_SAMPLES samples at the output interval (the measures
+ *                    need them); with output_interval = 0 this is checked by
+ *                    gal_scene_sample_count once the interval is chosen, before the run. */
+#define GAL_SCENE_MIN_OUTPUT_INTERVAL 1e-4 /* s */
+#define GAL_SCENE_MIN_TIME_STEP 1e-6       /* s */
+#define GAL_SCENE_MAX_SAMPLES 1000000L     /* trace samples of a run */
+#define GAL_SCENE_MAX_STEPS 1000000000L    /* integration steps of a run */
+#define GAL_SCENE_MIN_SAMPLES 64L          /* trace samples a run's measures need */
+
+/* The number of trace samples of a run of `duration` s (the scene's, or a study's) sampled every
+ * dt_out s (floor(duration / dt_out) + 1), into *ns; GAL_EINPUT naming sc's file, [simulation]
+ * duration or output_interval and the allowed range when it is below min_samples
+ * (GAL_SCENE_MIN_SAMPLES for a run that is measured) or above GAL_SCENE_MAX_SAMPLES (never a
+ * cast overflow). */
+int gal_scene_sample_count(const gal_scene *sc, double duration, double dt_out, long min_samples,
+                           long *ns);
+
 /* Effect names as written in scene files, indexed by gal_effect. */
 extern const char *const gal_effect_names[GAL_FX_COUNT];
 
