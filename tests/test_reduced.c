@@ -332,6 +332,70 @@ static void test_rayleigh_projection(void)
     gal_equilibrium_clear(&eq);
 }
 
+/* A uniform load of 1 N/m along y, whatever the state: the reduced model's quadrature. */
+static int uniform_y(void *ctx, double t, double x, const double r[3], const double rdot[3], const double tan[3],
+                     const double d1[3], double f[3], double *m)
+{
+    (void)ctx, (void)t, (void)x, (void)r, (void)rdot, (void)tan, (void)d1;
+    f[0] = 0, f[1] = 1.0, f[2] = 0, *m = 0;
+    return GAL_OK;
+}
+
+/* The reduced loads' quadrature (2 Gauss points per segment): with one segment per element the
+ * mode shapes are linear on each segment, so the generalized load of a uniform load is exact:
+ * sum_q w_q phi_i(s_q) = phi_i^T F with F the consistent nodal load (l0/2 of each element to each
+ * of its nodes). */
+static void test_load_quadrature_exact(void)
+{
+    gal_rod_params p = {.length = 200, .elements = 20, .EA = 3e7, .EI = 20, .GJ = 150, .mass = 1.6,
+                        .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
+    gal_equilibrium eq;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
+    gal_modes md;
+    int want[4] = {2, 3, 0, 0};
+    CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
+    int sel[8], r = 0;
+    for (int k = 0; k < md.n && r < 8; k++)
+        if (md.mode[k].selected) sel[r++] = k;
+    const gal_rod *rod = eq.rod;
+    int mid = rod->nn / 2;
+    gal_obs obs[1] = {{{3 * mid + 2, -1}, {1.0, 0.0}}};
+    gal_reduced_opts o;
+    gal_reduced_default_opts(&o);
+    gal_reduced *rm = gal_reduced_build(rod, eq.q, &md, sel, r, obs, 1, &o);
+    gal_pointload pl = {uniform_y, NULL}, none = {0};
+    int nqp = 2 * rod->p.elements;
+    gal_rdyn *a = rm ? gal_rdyn_alloc(rm, rod, eq.q, NULL, &pl, nqp, 1e-9, 0.01, -1) : NULL;
+    gal_rdyn *b = rm ? gal_rdyn_alloc(rm, rod, eq.q, NULL, &none, nqp, 1e-9, 0.01, -1) : NULL;
+    CHECK(a && b, "set-up: %s", gal_error_message());
+    if (a && b) {
+        double ya[16] = {0}, yb[16] = {0};
+        a->sys.function(0, a->y, ya, a);
+        b->sys.function(0, b->y, yb, b);
+        int n = rod->ndof;
+        double worst = 0, scale = 0;
+        for (int i = 0; i < r; i++) {
+            double want_i = 0;
+            for (int j = 0; j < rod->nn; j++) {
+                int dof = rod->dof[3 * j + 1];
+                if (dof < 0) continue;
+                double len = 0.5 * ((j > 0 ? rod->l0[j - 1] : 0) + (j < rod->p.elements ? rod->l0[j] : 0));
+                want_i += rm->phi[(size_t)i * n + dof] * len;
+            }
+            double got = ya[r + i] - yb[r + i];
+            worst = fmax(worst, fabs(got - want_i));
+            scale = fmax(scale, fabs(want_i));
+        }
+        printf("    (generalized uniform load: worst error %.2e of %.3g)\n", worst, scale);
+        CHECK(worst <= 1e-9 * scale, "quadrature error %g of %g", worst, scale);
+    }
+    gal_rdyn_free(a);
+    gal_rdyn_free(b);
+    gal_reduced_free(rm);
+    gal_modes_clear(&md);
+    gal_equilibrium_clear(&eq);
+}
+
 int main(void)
 {
     RUN(test_kirchhoff_carrier);
@@ -339,5 +403,6 @@ int main(void)
     RUN(test_reduced_force_at_random_states);
     RUN(test_free_vibration_reduced_vs_full);
     RUN(test_rayleigh_projection);
+    RUN(test_load_quadrature_exact);
     return CHECK_SUMMARY();
 }
