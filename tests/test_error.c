@@ -25,8 +25,12 @@ static void test_message(void)
     CHECK(gal_error(GAL_EINPUT, "inner %d", 7) == GAL_EINPUT, "status returned");
     CHECK(gal_error(GAL_EFAIL, "outer: %s", gal_error_message()) == GAL_EFAIL, "status");
     CHECK(!strcmp(gal_error_message(), "outer: inner 7"), "%s", gal_error_message());
+    CHECK(gal_error_status() == GAL_EFAIL, "status kept with the message: %d", gal_error_status());
+    gal_error(GAL_ENOMEM, "out of memory");
+    CHECK(gal_error_status() == GAL_ENOMEM, "status kept with the message: %d", gal_error_status());
     gal_error_clear();
     CHECK(!strcmp(gal_error_message(), "unknown error"), "%s", gal_error_message());
+    CHECK(gal_error_status() == GAL_OK, "cleared: %d", gal_error_status());
 }
 
 enum { NTHREADS = 2, ROUNDS = 20000 };

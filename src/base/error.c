@@ -9,6 +9,7 @@
 
 /* one message per thread (C11): a thread that fails reads its own message, whatever the others do */
 static _Thread_local char errbuf[2048];
+static _Thread_local int errstatus; /* the status that came with the message */
 
 const char *gal_error_message(void) { return errbuf[0] ? errbuf : "unknown error"; }
 
@@ -20,10 +21,13 @@ int gal_error(int status, const char *fmt, ...)
     vsnprintf(tmp, sizeof tmp, fmt, ap);
     va_end(ap);
     memcpy(errbuf, tmp, sizeof errbuf);
+    errstatus = status;
     return status;
 }
 
-void gal_error_clear(void) { errbuf[0] = '\0'; }
+void gal_error_clear(void) { errbuf[0] = '\0', errstatus = GAL_OK; }
+
+int gal_error_status(void) { return errstatus; }
 
 int gal_exit_code(int status)
 {

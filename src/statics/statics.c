@@ -198,7 +198,7 @@ static int start(const gal_rod_params *p, gal_statics_spec spec, double value, g
     }
     q[3 * nel] = p->length, q[3 * nel + 2] = p->height_difference; /* supports exactly */
     gal_rod *rod = gal_rod_alloc(&rp, q);
-    if (!rod) { free(q); return GAL_EINPUT; }
+    if (!rod) { free(q); return gal_error_status() == GAL_ENOMEM ? GAL_ENOMEM : GAL_EINPUT; }
     eq->rod = rod, eq->q = q;
     return GAL_OK;
 }

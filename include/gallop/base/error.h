@@ -27,6 +27,9 @@ int gal_error(int status, const char *fmt, ...)
 #endif
     ;
 void gal_error_clear(void);
+/* The status that came with the calling thread's last message (GAL_OK after gal_error_clear):
+ * for constructors, which return NULL, so that the caller passes the real status on. */
+int gal_error_status(void);
 /* Process exit status for a library status: 0, 1 (computation), 2 (input). */
 int gal_exit_code(int status);
 
