@@ -294,27 +294,53 @@ static void test_free_vibration_reduced_vs_full(void)
     free_vibration_vs_full(GAL_FAMILY_HORIZONTAL, 2.0);
 }
 
+/* A 200 m span at 20 kN with `nel` elements, its modes (want per family) and the identified
+ * reduced model on the selected ones (one observation: mid-span vertical). */
+typedef struct {
+    gal_equilibrium eq;
+    gal_modes md;
+    int sel[8], r;
+    gal_reduced *rm;
+} small_rom;
+
+static int small_rom_build(small_rom *s, int nel, const int want[4])
+{
+    gal_rod_params p = {.length = 200, .elements = nel, .EA = 3e7, .EI = 20, .GJ = 150, .mass = 1.6,
+                        .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
+    memset(s, 0, sizeof *s);
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &s->eq) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_modes_find(s->eq.rod, s->eq.q, want, 200, &s->md) == GAL_OK, "%s", gal_error_message());
+    for (int k = 0; k < s->md.n && s->r < 8; k++)
+        if (s->md.mode[k].selected) s->sel[s->r++] = k;
+    int mid = s->eq.rod->nn / 2;
+    gal_obs obs[1] = {{{3 * mid + 2, -1}, {1.0, 0.0}}};
+    gal_reduced_opts o;
+    gal_reduced_default_opts(&o);
+    s->rm = gal_reduced_build(s->eq.rod, s->eq.q, &s->md, s->sel, s->r, obs, 1, &o);
+    CHECK(s->rm != NULL, "%s", gal_error_message());
+    return s->rm ? GAL_OK : GAL_EFAIL;
+}
+
+static void small_rom_clear(small_rom *s)
+{
+    gal_reduced_free(s->rm);
+    gal_modes_clear(&s->md);
+    gal_equilibrium_clear(&s->eq);
+}
+
 /* issue 14: the reduced model's damping is the structural damping projected on its
  * mass-normalized modes; for Rayleigh damping alpha M + beta K that is, in closed form,
  * alpha + beta omega^2 on the diagonal (not omega) and zero off it. */
 static void test_rayleigh_projection(void)
 {
-    gal_rod_params p = {.length = 200, .elements = 40, .EA = 3e7, .EI = 20, .GJ = 150, .mass = 1.6,
-                        .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
-    gal_equilibrium eq;
-    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
-    gal_modes md;
+    small_rom s;
     int want[4] = {3, 2, 1, 0};
-    CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
-    int sel[8], r = 0;
-    for (int k = 0; k < md.n && r < 8; k++)
-        if (md.mode[k].selected) sel[r++] = k;
-    int mid = eq.rod->nn / 2;
-    gal_obs obs[1] = {{{3 * mid + 2, -1}, {1.0, 0.0}}};
-    gal_reduced_opts o;
-    gal_reduced_default_opts(&o);
-    gal_reduced *rm = gal_reduced_build(eq.rod, eq.q, &md, sel, r, obs, 1, &o);
-    CHECK(rm != NULL, "%s", gal_error_message());
+    small_rom_build(&s, 40, want);
+    gal_equilibrium eq = s.eq;
+    gal_modes md = s.md;
+    gal_reduced *rm = s.rm;
+    const int *sel = s.sel;
+    int r = s.r;
     double a = 0.07, b = 0.003;
     gal_damping *c = gal_damping_rayleigh_alloc(eq.rod, eq.q, a, b);
     gal_rdyn *rd = rm && c ? gal_rdyn_alloc(rm, eq.rod, eq.q, c, NULL, 32, 1e-9, 0.01, -1) : NULL;
@@ -327,9 +353,7 @@ static void test_rayleigh_projection(void)
             }
     gal_damping_free(c);
     gal_rdyn_free(rd);
-    gal_reduced_free(rm);
-    gal_modes_clear(&md);
-    gal_equilibrium_clear(&eq);
+    small_rom_clear(&s);
 }
 
 /* A load along y growing linearly along the span, f_y = x / 100 N/m (a uniform one would not do:
@@ -348,22 +372,13 @@ static int ramp_y(void *ctx, double t, double x, const double r[3], const double
  * 2 x_b)) / 600 over the elements (nodes a, b). */
 static void test_load_quadrature_exact(void)
 {
-    gal_rod_params p = {.length = 200, .elements = 20, .EA = 3e7, .EI = 20, .GJ = 150, .mass = 1.6,
-                        .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
-    gal_equilibrium eq;
-    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
-    gal_modes md;
+    small_rom s;
     int want[4] = {2, 3, 0, 0};
-    CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
-    int sel[8], r = 0;
-    for (int k = 0; k < md.n && r < 8; k++)
-        if (md.mode[k].selected) sel[r++] = k;
+    small_rom_build(&s, 20, want);
+    gal_equilibrium eq = s.eq;
     const gal_rod *rod = eq.rod;
-    int mid = rod->nn / 2;
-    gal_obs obs[1] = {{{3 * mid + 2, -1}, {1.0, 0.0}}};
-    gal_reduced_opts o;
-    gal_reduced_default_opts(&o);
-    gal_reduced *rm = gal_reduced_build(rod, eq.q, &md, sel, r, obs, 1, &o);
+    gal_reduced *rm = s.rm;
+    int r = s.r;
     gal_pointload pl = {ramp_y, NULL}, none = {0};
     int nqp = 2 * rod->p.elements;
     gal_rdyn *a = rm ? gal_rdyn_alloc(rm, rod, eq.q, NULL, &pl, nqp, 1e-9, 0.01, -1) : NULL;
@@ -392,9 +407,7 @@ static void test_load_quadrature_exact(void)
     }
     gal_rdyn_free(a);
     gal_rdyn_free(b);
-    gal_reduced_free(rm);
-    gal_modes_clear(&md);
-    gal_equilibrium_clear(&eq);
+    small_rom_clear(&s);
 }
 
 int main(void)
