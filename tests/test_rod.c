@@ -9,6 +9,7 @@
 static int ice_next; /* the next random rod carries eccentric ice */
 
 /* A rod on a random 3-D curve near a sagged chord, with random twists. */
+static double bundle_next; /* the next random_rod's bundle_radius2 */
 static gal_rod *random_rod(int nel, int torsion, int clamped, double EA, double EI, double **q,
                            gsl_rng *r)
 {
@@ -16,6 +17,7 @@ static gal_rod *random_rod(int nel, int torsion, int clamped, double EA, double 
                         .unstretched_length = 101, .EA = EA, .EI = EI, .GJ = 300,
                         .mass = 1.5, .polar_inertia = 2e-4, .gravity = 9.81,
                         .torsion = torsion, .twist_clamped = clamped};
+    p.bundle_radius2 = bundle_next;
     if (ice_next) p.ecc_mass = 0.5, p.ecc = 0.01, p.ecc_angle = 2.5, p.mass += 0.5;
     int nq = 3 * (nel + 1) + (torsion ? nel : 0);
     double *q0 = calloc((size_t)nq, sizeof(double));
@@ -232,6 +234,62 @@ static void test_derivatives_per_term(void)
     gsl_rng_free(r);
 }
 
+/* A bundle carried as one rod: its tension-twist terms' gradients and tangents against finite
+ * differences, on a stretched (so that the tension stiffens) and twisted configuration; and the
+ * stiffness they add to a uniform twist equals T R^2 (the bundle's torsional stiffness from the
+ * sub-conductors' tension). */
+static void test_bundle_terms(void)
+{
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(r, 5);
+    double *q;
+    bundle_next = 0.04; /* R = 0.2 m */
+    gal_rod *rod = random_rod(12, 1, 1, 2e4, 50.0, &q, r);
+    bundle_next = 0;
+    CHECK(rod && rod->nterm == 7, "seven terms expected, %d", rod ? rod->nterm : -1);
+    if (!rod || rod->nterm != 7) return;
+    CHECK(rod->term[3] == &gal_rod_term_bundle_torsion && rod->term[5] == &gal_rod_term_bundle_clamps,
+          "bundle terms in place");
+    for (int k = 3; k <= 5; k += 2) {
+        double e[4];
+        fd_errors(rod, k, q, e);
+        CHECK(e[0] <= 1e-6 * e[1], "%s: gradient vs FD of its energy: error %g of %g",
+              rod->term[k]->name, e[0], e[1]);
+        CHECK(e[2] <= 1e-5 * e[3], "%s: tangent vs FD of its gradient: error %g of %g",
+              rod->term[k]->name, e[2], e[3]);
+        printf("    (%s: force error %.2g of %.2g, tangent error %.2g of %.2g)\n",
+               rod->term[k]->name, e[0], e[1], e[2], e[3]);
+    }
+    /* a straight rod stretched by eps and twisted uniformly by phi over its length: the two
+     * terms' energy is T R^2 phi^2 / (2 L0) (T = EA eps) */
+    int nel = rod->p.elements, nn = rod->nn;
+    double eps = 0.01, phi = 0.3, L0 = rod->p.unstretched_length, U0, U1;
+    for (int i = 0; i < nn; i++) {
+        double s = (double)i / nel;
+        q[3 * i] = 100 * s, q[3 * i + 1] = 0, q[3 * i + 2] = 10 * s;
+    }
+    double chord = sqrt(100.0 * 100.0 + 10.0 * 10.0);
+    for (int j = 0; j < nel; j++) rod->l0[j] = chord / (1 + eps) / nel;
+    L0 = chord / (1 + eps);
+    /* element j's twist at its centre, phi (j + 1/2) / nel, clamped 0 at both supports: not a
+     * uniform rate at the ends; take the interior nodes' share and the clamps' share together */
+    for (int j = 0; j < nel; j++) q[3 * nn + j] = 0;
+    gal_rod_eval_term(rod, 3, q, &U0, NULL, NULL);
+    CHECK(fabs(U0) < 1e-12, "untwisted: no bundle energy (%g)", U0);
+    for (int j = 0; j < nel; j++) q[3 * nn + j] = phi * sin(GAL_PI * (j + 0.5) / nel);
+    double Un, Uc;
+    gal_rod_eval_term(rod, 3, q, &Un, NULL, NULL);
+    gal_rod_eval_term(rod, 5, q, &Uc, NULL, NULL);
+    U1 = Un + Uc;
+    /* continuous: T R^2 / 2 int (phi pi / L0 cos(pi s/L0))^2 ds = T R^2 phi^2 pi^2 / (4 L0) */
+    double T = rod->p.EA * eps, want = T * 0.04 * phi * phi * GAL_PI * GAL_PI / (4 * L0);
+    CHECK_REL(U1, want, 0.02);
+    printf("    (bundle twist energy %.6g J, continuous %.6g J)\n", U1, want);
+    free(q);
+    gal_rod_free(rod);
+    gsl_rng_free(r);
+}
+
 /* An effect that is off is not in the list: a cable (no bending, no torsion, no gravity) has the
  * extension alone; a free twist has no clamp term. */
 static void test_term_list(void)
@@ -263,5 +321,6 @@ int main(void)
     RUN(test_uniform_twist_energy);
     RUN(test_derivatives_per_term);
     RUN(test_term_list);
+    RUN(test_bundle_terms);
     return CHECK_SUMMARY();
 }

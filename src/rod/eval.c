@@ -14,7 +14,10 @@ void gal_rod_terms_init(gal_rod *rod)
     rod->term[n++] = &gal_rod_term_extension;                   /* EA > 0 (checked at alloc) */
     if (p->EI > 0) rod->term[n++] = &gal_rod_term_bending;
     if (p->torsion) rod->term[n++] = &gal_rod_term_torsion;
+    if (p->torsion && p->bundle_radius2 > 0) rod->term[n++] = &gal_rod_term_bundle_torsion;
     if (p->torsion && p->twist_clamped) rod->term[n++] = &gal_rod_term_torsion_clamps;
+    if (p->torsion && p->twist_clamped && p->bundle_radius2 > 0)
+        rod->term[n++] = &gal_rod_term_bundle_clamps;
     if (rod->ecc_c && p->gravity != 0) rod->term[n++] = &gal_rod_term_ice;
     if (p->gravity != 0) rod->term[n++] = &gal_rod_term_gravity;
     rod->nterm = n;

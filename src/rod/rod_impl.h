@@ -21,6 +21,20 @@ typedef struct gal_rod_node {
     double e0[3], e1[3], t0[3], t1[3], n0, n1, c, lbar;
     double P0[3][3], P1[3][3];
 } gal_rod_node;
+typedef double gal_m33[3][3];
+/* The twist strain m = theta1 - theta0 + mref at a node (src/rod/torsion.c), its gradient gm over
+ * (e0, e1, theta0, theta1), and the half-angle vectors with their derivatives that its Hessian
+ * needs (filled when hess). */
+typedef struct gal_rod_twist {
+    double m, gm[8], gA[3], gB0[3], gB1[3];
+    gal_m33 DAu, DAv, DB0, DB1;
+} gal_rod_twist;
+void gal_rod_twist_strain(const gal_rod *rod, int i, const double *q, const gal_rod_node *nd,
+                          int hess, gal_rod_twist *s);
+/* H += 2 kt (gm gm^T + m d2m), d2m the symmetrized second derivative of mref over (e0, e1). */
+void gal_rod_twist_hessian(const gal_rod_node *nd, gal_rod_twist *s, double kt,
+                           double (*H)[8]);
+
 /* One pass over the interior nodes for the node terms t[0..nt-1]: per node the geometry (GAL_EFAIL
  * with a message when the rod folds back on itself), the sum of the terms' energies, gradients
  * and Hessians (H when K != NULL), assembled into *U, grad (may be NULL) and K->val (may be NULL). */

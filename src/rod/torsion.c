@@ -9,10 +9,9 @@
 #include <math.h>
 #include <string.h>
 
-typedef double m33[3][3];
 
 /* [a]_x b = a x b */
-static void skew(const double *a, m33 S)
+static void skew(const double *a, gal_m33 S)
 {
     S[0][0] = 0, S[0][1] = -a[2], S[0][2] = a[1];
     S[1][0] = a[2], S[1][1] = 0, S[1][2] = -a[0];
@@ -20,9 +19,9 @@ static void skew(const double *a, m33 S)
 }
 
 /* C = A B */
-static void mul33(m33 A, m33 B, m33 C)
+static void mul33(gal_m33 A, gal_m33 B, gal_m33 C)
 {
-    m33 T;
+    gal_m33 T;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) T[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
     memcpy(C, T, sizeof T);
@@ -30,7 +29,7 @@ static void mul33(m33 A, m33 B, m33 C)
 
 /* Half-angle rotation vector between unit vectors: g(u, v) = u x v / (1 + u . v), and its
  * derivatives dg/du = -s [v]_x - s^2 (u x v) v^T, dg/dv = s [u]_x - s^2 (u x v) u^T, s = 1/(1+u.v). */
-static void halfrot(const double *u, const double *v, double *g, m33 Du, m33 Dv)
+static void halfrot(const double *u, const double *v, double *g, gal_m33 Du, gal_m33 Dv)
 {
     double s = 1.0 / (1.0 + gal_dot3(u, v)), w[3];
     gal_cross3(u, v, w);
@@ -47,15 +46,8 @@ static void halfrot(const double *u, const double *v, double *g, m33 Du, m33 Dv)
     }
 }
 
-/* The twist strain m = theta1 - theta0 + mref at a node, its gradient gm over (e0, e1, theta0,
- * theta1), and the half-angle vectors with their derivatives that its Hessian needs. */
-typedef struct {
-    double m, gm[8], gA[3], gB0[3], gB1[3];
-    m33 DAu, DAv, DB0, DB1;
-} twist_strain;
-
-static void strain(const gal_rod *rod, int i, const double *q, const gal_rod_node *nd, int hess,
-                   twist_strain *s)
+void gal_rod_twist_strain(const gal_rod *rod, int i, const double *q, const gal_rod_node *nd,
+                          int hess, gal_rod_twist *s)
 {
     const double *t0 = nd->t0, *t1 = nd->t1;
     const double *tb0 = rod->tbar + 3 * (i - 1), *tb1 = rod->tbar + 3 * i;
@@ -78,12 +70,12 @@ static void strain(const gal_rod *rod, int i, const double *q, const gal_rod_nod
     s->gm[6] = -1, s->gm[7] = 1;
 }
 
-/* H += 2 kt (gm gm^T + m d2m), d2m the symmetrized second derivative of mref over (e0, e1). */
-static void hessian(const gal_rod_node *nd, twist_strain *s, double kt, double (*H)[8])
+void gal_rod_twist_hessian(const gal_rod_node *nd, gal_rod_twist *s, double kt,
+                           double (*H)[8])
 {
     const double n0 = nd->n0, n1 = nd->n1, *t0 = nd->t0, *t1 = nd->t1;
-    m33 X0, X1, Y0, Y1;
-    m33 P0, P1;
+    gal_m33 X0, X1, Y0, Y1;
+    gal_m33 P0, P1;
     memcpy(P0, nd->P0, sizeof P0), memcpy(P1, nd->P1, sizeof P1);
     mul33(s->DAu, P0, X0); /* dA/de0 * n0 */
     mul33(s->DAv, P1, X1); /* dA/de1 * n1 */
@@ -124,11 +116,11 @@ static int clamps(const gal_rod *rod, const double *q, double *U, double *grad, 
 static double node(const gal_rod *rod, int i, const double *q, const gal_rod_node *nd, double *g,
                    double (*H)[8])
 {
-    twist_strain s;
-    strain(rod, i, q, nd, H != NULL, &s);
+    gal_rod_twist s;
+    gal_rod_twist_strain(rod, i, q, nd, H != NULL, &s);
     double kt = rod->p.GJ / nd->lbar;
     for (int a = 0; a < 8; a++) g[a] += 2 * kt * s.m * s.gm[a];
-    if (H) hessian(nd, &s, kt, H);
+    if (H) gal_rod_twist_hessian(nd, &s, kt, H);
     return kt * s.m * s.m;
 }
 

@@ -46,6 +46,9 @@ typedef struct gal_rod_params {
     double ecc_mass;
     double ecc;
     double ecc_angle;
+    /* m^2: a bundle carried as one rod (src/rod/bundle.c): the square of the radius at which its
+     * sub-conductors sit, whose tension stiffens the twist by T R^2; 0 = a single conductor */
+    double bundle_radius2;
 } gal_rod_params;
 
 struct gal_rod;
@@ -71,11 +74,14 @@ typedef struct gal_rod_term {
  *   extension        src/rod/extension.c  always (EA > 0)
  *   bending          src/rod/bending.c    EI > 0 (node)
  *   torsion          src/rod/torsion.c    torsion on (node)
+ *   bundle_torsion   src/rod/bundle.c     torsion on and bundle_radius2 > 0 (node)
  *   torsion_clamps   src/rod/torsion.c    torsion on and twist_clamped: the twist held at the supports
+ *   bundle_clamps    src/rod/bundle.c     the same, for the bundle's tension (bundle_radius2 > 0)
  *   ice_eccentricity src/rod/ice.c        eccentric ice (ecc_mass > 0, ecc != 0, torsion) and gravity
  *   gravity          src/rod/gravity.c    gravity != 0 */
 extern const gal_rod_term gal_rod_term_extension, gal_rod_term_bending, gal_rod_term_torsion,
-    gal_rod_term_torsion_clamps, gal_rod_term_ice, gal_rod_term_gravity;
+    gal_rod_term_torsion_clamps, gal_rod_term_ice, gal_rod_term_gravity, gal_rod_term_bundle_torsion,
+    gal_rod_term_bundle_clamps;
 #define GAL_ROD_MAX_TERMS 8
 
 /* The immutable model of a discretized span. The full configuration q holds 3 (elements + 1)
