@@ -10,6 +10,28 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* A bundle carried as one rod (the equivalent model): n sub-conductors at radius R on the bundle
+ * circle, each the scene's conductor with its ice and its share of the span's tension, all moving
+ * with the bundle's centre and twist (rigid spacers, the sub-conductors clamped at the yokes).
+ * Stiffness, mass and tension are n times one sub-conductor's (its sag is the bundle's), the spacers
+ * smeared over the chord; the polar inertia adds each sub-conductor's m R^2 and the spacers'; the
+ * twist is stiffened by the sub-conductors' tension, T R^2 (src/rod/bundle.c). Bending stays n EI:
+ * between spacers the sub-conductors bend about their own axes. */
+static void bundle_equivalent(const gal_scene *sc, gal_model_rod *r)
+{
+    gal_rod_params *p = &r->p;
+    int n = sc->bundle.subconductors;
+    double R = sc->bundle.radius, L = sc->span.length, h = sc->span.height_difference;
+    double chord = sqrt(L * L + h * h), m1 = p->mass;
+    p->EA *= n, p->EI *= n, p->GJ *= n;
+    p->mass = n * m1 + sc->bundle.spacers * sc->bundle.spacer_mass / chord;
+    p->polar_inertia = n * (p->polar_inertia + m1 * R * R) +
+                       sc->bundle.spacers * sc->bundle.spacer_inertia / chord;
+    p->ecc_mass *= n; /* every sub-conductor's ice, at the same offset from its own axis */
+    p->bundle_radius2 = R * R;
+    if (r->spec == GAL_BY_TENSION) r->spec_value *= n;
+}
+
 /* The rod of the span: its parameters and equilibrium specification. */
 static int rod_params(const gal_scene *sc, gal_model_rod *r)
 {
@@ -39,6 +61,7 @@ static int rod_params(const gal_scene *sc, gal_model_rod *r)
     }
     int st = gal_stringing_spec(sc, p->gravity, &r->spec, &r->spec_value); /* tension, sag or length */
     if (st != GAL_OK) return st;
+    if (sc->bundle.subconductors > 1) bundle_equivalent(sc, r);
     p->unstretched_length = r->spec == GAL_BY_LENGTH ? r->spec_value : 0.0;
     return GAL_OK;
 }
@@ -50,7 +73,9 @@ static void loads_config(const gal_scene *sc, gal_loads *L)
     L->flags = (sc->effect[GAL_FX_AERO_DRAG] ? GAL_AERO_DRAG : 0u) | (sc->effect[GAL_FX_AERO_LIFT] ? GAL_AERO_LIFT : 0u) |
                (sc->effect[GAL_FX_AERO_MOMENT] && sc->effect[GAL_FX_TORSION] ? GAL_AERO_MOMENT : 0u);
     L->aero_damping = sc->effect[GAL_FX_AERO_DAMPING];
-    L->rho = sc->wind.air_density;
+    /* the n sub-conductors of a bundle see the same flow (no wake shielding): n times the section's
+     * loads, carried as n times the air density */
+    L->rho = sc->wind.air_density * sc->bundle.subconductors;
     L->diam = sc->conductor.diameter;
     L->attack_angle = sc->ice.present ? sc->ice.attack_angle : 0.0;
     L->speed = sc->wind.speed;

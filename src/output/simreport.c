@@ -100,6 +100,17 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
                     "equilibrium, horizontal (y, downwind), vertical (z, up), along (x), m, and the twist, deg; "
                     "the support tensions, N");
     gal_json_obj_end(j);
+    if (sc->bundle.subconductors > 1) { /* the traces and tensions are the bundle's */
+        gal_json_key(j, "bundle");
+        gal_json_obj_begin(j);
+        gal_json_kv_num(j, "subconductors", sc->bundle.subconductors);
+        gal_json_kv_num(j, "radius_m", sc->bundle.radius);
+        gal_json_kv_str(j, "model", "equivalent");
+        gal_json_kv_str(j, "holds", "probes: the bundle's centre and twist; tensions: the bundle's, the sum "
+                        "over its sub-conductors (the equivalent model does not split it: each carries "
+                        "1/subconductors of it)");
+        gal_json_obj_end(j);
+    }
     int mid = gal_sim_mid_probe(r), st;
     gal_sim_measures mm;
     if ((st = gal_sim_measure(r, mid, -1, &mm))) return st;

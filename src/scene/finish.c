@@ -240,6 +240,33 @@ static int wind_and_effects(pstate *ps)
     return 1;
 }
 
+/* [bundle]: the counts a bundle comes in, a separation for more than one, the circle's radius. */
+static int bundle_checks(pstate *ps)
+{
+    gal_scene *sc = ps->sc;
+    int n = sc->bundle.subconductors;
+    if (!(n == 1 || n == 2 || n == 3 || n == 4 || n == 6 || n == 8))
+        return scn_kfail(ps, K_BSUB, "not a bundle's count; allowed: 1, 2, 3, 4, 6 or 8");
+    if (n == 1) {
+        for (int k = K_BSEP; k <= K_BMODEL; k++)
+            if (ps->given[k])
+                return scn_kfail(ps, k, "a key of a bundle, but [bundle] subconductors is 1; allowed: "
+                             "subconductors = 2, 3, 4, 6 or 8 with it, or leave it out");
+        return 1;
+    }
+    if (!ps->given[K_BSEP])
+        return scn_kfail(ps, K_BSUB, "a bundle of %d needs [bundle] separation (m, between adjacent "
+                     "sub-conductors; allowed: 0 < separation <= 2)", n);
+    if (sc->bundle.explicit_model)
+        return scn_kfail(ps, K_BMODEL, "the explicit bundle model (one rod per sub-conductor) is not "
+                     "built yet; allowed: equivalent");
+    if (!sc->effect[GAL_FX_TORSION])
+        return scn_kfail(ps, K_BSUB, "a bundle with [effects] torsion = off: its twist is what the "
+                     "bundle changes; allowed: torsion = on, or subconductors = 1");
+    sc->bundle.radius = sc->bundle.separation / (2 * sin(GAL_PI / n));
+    return 1;
+}
+
 int scn_finish(pstate *ps, const char *csv_given)
 {
     if (ps->given[K_CNAME]) {
@@ -248,5 +275,5 @@ int scn_finish(pstate *ps, const char *csv_given)
         if (!scn_load_conductor(ps, csv)) return 0;
     }
     return required_keys(ps) && span_checks(ps) && stringing_checks(ps) && conductor_and_ice(ps) &&
-           scn_wind_profile(ps) && wind_and_effects(ps) && sim_sizes(ps);
+           scn_wind_profile(ps) && wind_and_effects(ps) && sim_sizes(ps) && bundle_checks(ps);
 }

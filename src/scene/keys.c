@@ -18,8 +18,10 @@ const char *const scn_turb_names[] = {"none", "kaimal", "davenport", "von_karman
                                       NULL};
 const char *const scn_terrain_names[] = {"0", "I", "II", "III", "IV", NULL};
 const char *const scn_onoff_names[] = {"off", "on", NULL};
+const char *const scn_bundle_model_names[] = {"equivalent", "explicit", NULL};
 static const char *const sections[] = {"span", "stringing", "conductor", "ice", "wind",
-                                       "effects", "model", "simulation", "stability", "output", NULL};
+                                       "effects", "model", "simulation", "stability", "output",
+                                       "bundle", NULL};
 
 #define OFF(m) offsetof(gal_scene, m)
 #define NUM(s, k, m, lo, lop, hi, hip, u) {s, k, T_NUM, OFF(m), lo, hi, lop, hip, 1.0, u, NULL}
@@ -126,6 +128,19 @@ const keydef scn_keys[K_COUNT] = {
     {"output", "neighbour_phases", T_PAIRS, 0, -1000, 1000, 0, 0, 1.0,
      "m, y1, z1, y2, z2, ...: neighbouring phases at rest, offsets (horizontal downwind, up) from this "
      "conductor's equilibrium; the galloping ellipse's clearance to each is reported", NULL},
+    INT("bundle", "subconductors", bundle.subconductors, 1, 8),
+    NUM("bundle", "separation", bundle.separation, 0, 1, 2, 0,
+        "m, between adjacent sub-conductors on the bundle circle"),
+    INT("bundle", "spacers", bundle.spacers, 0, 1000),
+    {"bundle", "orientation", T_NUM, OFF(bundle.orientation), -180, 180, 0, 0, DEG,
+     "deg, of the first sub-conductor on the bundle circle from the horizontal", NULL},
+    NUM("bundle", "spacer_mass", bundle.spacer_mass, 0, 0, 1000, 0, "kg, of one spacer"),
+    NUM("bundle", "spacer_inertia", bundle.spacer_inertia, 0, 0, 1000, 0,
+        "kg m^2, of one spacer about the bundle axis"),
+    {"bundle", "model", T_ENUM, 0, 0, 0, 0, 0, 1.0,
+     "equivalent | explicit (equivalent: one rod with the bundle's mass, inertia and tension-given "
+     "torsional stiffness; explicit: one rod per sub-conductor, joined by the spacers)",
+     scn_bundle_model_names},
 };
 
 const char *scn_key_name(int k)
@@ -163,7 +178,7 @@ const char *scn_key_list(const char *sec, char *buf, size_t n)
 
 const char *scn_section_list(void)
 {
-    return "span, stringing, conductor, ice, wind, effects, model, simulation, stability, output";
+    return "span, stringing, conductor, ice, wind, effects, model, simulation, stability, output, bundle";
 }
 
 /* the keys that fix the equilibrium: exactly one of them (the stringing section counts once) */

@@ -184,6 +184,22 @@ static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
     }
 }
 
+/* [bundle], only for a bundle (its keys are refused with one sub-conductor). */
+static void print_bundle(const gal_scene *sc, FILE *fp)
+{
+    if (sc->bundle.subconductors <= 1) return;
+    fprintf(fp, "\n[bundle]\n");
+    fprintf(fp, "subconductors = %d ; count\n", sc->bundle.subconductors);
+    put_key(fp, sc, K_BSEP);
+    fprintf(fp, "spacers = %d ; count\n", sc->bundle.spacers);
+    put_key(fp, sc, K_BORIENT);
+    put_key(fp, sc, K_BSMASS);
+    put_key(fp, sc, K_BSINERTIA);
+    fprintf(fp, "model = %s ; equivalent | explicit\n",
+            scn_bundle_model_names[sc->bundle.explicit_model ? 1 : 0]);
+    fprintf(fp, "; radius of the bundle circle: %.6g m\n", sc->bundle.radius);
+}
+
 void gal_scene_print(const gal_scene *sc, FILE *fp)
 {
     char b[GAL_PATH_MAX];
@@ -193,4 +209,5 @@ void gal_scene_print(const gal_scene *sc, FILE *fp)
     print_span_conductor_ice(sc, fp);
     print_wind_effects(sc, fp);
     print_model_simulation_output(sc, fp);
+    print_bundle(sc, fp);
 }

@@ -27,7 +27,8 @@ enum {
     K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_IDAMP, K_IDTW, K_REDUCED, K_RESTOL, K_ONINV,
     K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL, K_START,
     K_SPMIN, K_SPMAX, K_SPSTEP,
-    K_DIR, K_NEIGHBOURS, K_COUNT
+    K_DIR, K_NEIGHBOURS,
+    K_BSUB, K_BSEP, K_BSPACERS, K_BORIENT, K_BSMASS, K_BSINERTIA, K_BMODEL, K_COUNT
 };
 
 typedef struct {
@@ -49,6 +50,7 @@ extern const char *const scn_on_invalid_names[];
 extern const char *const scn_turb_names[];
 extern const char *const scn_terrain_names[];
 extern const char *const scn_onoff_names[];
+extern const char *const scn_bundle_model_names[];
 
 const char *scn_key_name(int k);
 int scn_find_section(const char *s);

@@ -166,6 +166,7 @@ static int apply_enum(kv *a)
     else if (a->k == K_VTURB) sc->wind.vertical_turbulence = i;
     else if (a->k == K_REDUCED) sc->model.reduced_recomputed = i;
     else if (a->k == K_ONINV) sc->model.on_invalid_warn = i;
+    else if (a->k == K_BMODEL) sc->bundle.explicit_model = i;
     else
         sc->wind.turbulence = i == 1 ? GAL_TURB_KAIMAL
                               : i == 2 ? GAL_TURB_DAVENPORT

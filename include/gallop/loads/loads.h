@@ -38,7 +38,7 @@ typedef struct gal_loads {
     const gal_aero_table *table;
     unsigned flags;          /* GAL_AERO_DRAG | GAL_AERO_LIFT | GAL_AERO_MOMENT */
     int aero_damping;        /* the conductor's velocity is in the relative wind */
-    double rho;              /* kg/m^3 */
+    double rho;              /* kg/m^3; times the sub-conductors of a bundle carried as one rod */
     double diam;             /* m */
     double attack_angle;     /* rad: added to the angle of attack (the section's orientation at rest) */
     double speed;            /* m/s, mean */

@@ -121,6 +121,19 @@ typedef struct gal_scene {
         double vertical_coherence_decay; /* -, C_w in exp(-C_w f dx / U); default C of u */
     } wind;
 
+    struct {                      /* [bundle]: a phase of several sub-conductors held by spacers;
+                                   * each sub-conductor is [conductor] (with its [ice]) and the
+                                   * [span] tension and sag are one sub-conductor's */
+        int subconductors;        /* 1 (no bundle), 2, 3, 4, 6 or 8 */
+        double separation;        /* m, between adjacent sub-conductors on the bundle circle */
+        double radius;            /* m, of the bundle circle (from separation; 0 for one) */
+        int spacers;              /* count, evenly spaced along the span */
+        double orientation;       /* rad (scene: deg), of the first sub-conductor from horizontal */
+        double spacer_mass;       /* kg, of one spacer */
+        double spacer_inertia;    /* kg m^2, of one spacer about the bundle axis */
+        int explicit_model;       /* 1: one rod per sub-conductor; 0: one equivalent rod */
+    } bundle;
+
     int effect[GAL_FX_COUNT];     /* 1 on, 0 off */
 
     struct {
