@@ -163,7 +163,9 @@ key wind_terrain_bad        wind "terrain = V"
 key wind_terrain_no_height  wind "terrain = II" "height"
 scene wind_basic_and_speed wind "basic_speed = 20" >/dev/null   # speed now line 12
 refused wind_basic_and_speed "$tmp/wind_basic_and_speed.ini" 12 "basic_speed (line 11)"
-key wind_vertical_on        wind "vertical_turbulence = on"
+key wind_vertical_no_field  wind "vertical_turbulence = on"
+key wind_vertical_key_off  wind "vertical_intensity = 0.05"
+key wind_vertical_intens_2 wind "vertical_intensity = 2"
 # ---- [effects] ----
 key fx_value_bad            effects "gravity = maybe"
 key fx_value_number         effects "aero_drag = 2"

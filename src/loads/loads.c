@@ -15,19 +15,24 @@ void gal_loads_list_make(const gal_loads *L, gal_loads_list *list)
     int n = 0;
     if (L->speed != 0) list->wind[n++] = &gal_loads_term_mean_wind;
     if (L->u && L->nt > 1 && L->nx > 0) list->wind[n++] = &gal_loads_term_turbulence;
+    if (L->w && L->nt > 1 && L->nx > 0) list->wind[n++] = &gal_loads_term_vertical_turbulence;
     if (L->aero_damping) list->wind[n++] = &gal_loads_term_aero_damping;
     list->nwind = n;
     list->nsection = gal_aero_terms(L->flags, list->section);
 }
 
-/* The wind at (t, x): the along-wind speed (mean wind, turbulence), reversed, along dir. */
+/* The wind at (t, x): the along-wind speed (mean wind, turbulence), reversed, along dir, plus
+ * the vertical turbulence along +z. */
 static void wind_at(const gal_loads *L, const gal_loads_list *ls, double t, double x, double w[3])
 {
-    double ramp = gal_loads_ramp(L, t), U = 0;
-    for (int k = 0; k < ls->nwind; k++)
+    double ramp = gal_loads_ramp(L, t), U = 0, W = 0;
+    for (int k = 0; k < ls->nwind; k++) {
         if (ls->wind[k]->speed) U += ls->wind[k]->speed(L, t, x, ramp);
+        if (ls->wind[k]->vertical) W += ls->wind[k]->vertical(L, t, x, ramp);
+    }
     if (L->reverse_time > 0 && t >= L->reverse_time) U = -U;
     for (int k = 0; k < 3; k++) w[k] = U * L->dir[k];
+    w[2] += W;                                     /* z is up */
 }
 
 /* The point load: the relative wind (the wind, then aerodynamic damping), the section's turned
@@ -106,7 +111,7 @@ int gal_loads_static(const gal_rod *rod, double *q, const gal_loads *L, double f
     double *v = calloc((size_t)nq, sizeof(double));
     if (!f || !qold || !v) { free(f); free(qold); free(v); return gal_error(GAL_ENOMEM, "out of memory"); }
     gal_loads Ls = *L;
-    Ls.u = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0, Ls.rod = rod;
+    Ls.u = Ls.w = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0, Ls.rod = rod;
     double scale = fmax(rod->p.length, 1.0);
     int it;
     for (it = 0; it < max_iter; it++) {

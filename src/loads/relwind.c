@@ -25,5 +25,5 @@ static void aero_damping(const gal_loads *L, const double rdot[3], double w[3])
     for (int k = 0; k < 3; k++) w[k] -= rdot[k];
 }
 
-const gal_loads_term gal_loads_term_mean_wind = {"mean_wind", mean_wind, NULL};
-const gal_loads_term gal_loads_term_aero_damping = {"aero_damping", NULL, aero_damping};
+const gal_loads_term gal_loads_term_mean_wind = {"mean_wind", mean_wind, NULL, NULL};
+const gal_loads_term gal_loads_term_aero_damping = {"aero_damping", NULL, aero_damping, NULL};

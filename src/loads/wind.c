@@ -49,6 +49,7 @@ void gal_wind_params_default(gal_wind_params *p)
     p->duration = 600.0;
     p->time_step = 0.05;
     p->seed = 1;
+    p->component = GAL_WIND_ALONG;
 }
 
 int gal_wind_params_check(const gal_wind_params *p)
@@ -71,6 +72,9 @@ int gal_wind_params_check(const gal_wind_params *p)
     if (!(isfinite(p->coherence_decay) && p->coherence_decay >= 0))
         return gal_error(GAL_EINPUT, "wind: coherence_decay = %g: must be finite and >= 0",
                          p->coherence_decay);
+    if (p->component != GAL_WIND_ALONG && p->component != GAL_WIND_VERTICAL)
+        return gal_error(GAL_EINPUT, "wind: component = %d: allowed along (%d), vertical (%d)",
+                         (int)p->component, GAL_WIND_ALONG, GAL_WIND_VERTICAL);
     if (p->points < 1 || p->points > 1000000)
         return gal_error(GAL_EINPUT, "wind: points = %d: allowed range [1, 1000000]", p->points);
     if (p->points > 1 && !(isfinite(p->spacing) && p->spacing > 0))
@@ -92,6 +96,8 @@ double gal_wind_length_scale(const gal_wind_params *p)
 {
     if (p->length_scale > 0) return p->length_scale;
     double Lambda = 0.7 * fmin(p->height, 60.0); /* IEC 61400-1 turbulence scale parameter */
+    if (p->component == GAL_WIND_VERTICAL)        /* L_w (wind.h) */
+        return p->spectrum == GAL_WIND_VON_KARMAN ? 0.5 * 3.5 * Lambda : 0.66 * Lambda;
     switch (p->spectrum) {
     case GAL_WIND_KAIMAL: return 8.1 * Lambda;
     case GAL_WIND_VON_KARMAN: return 3.5 * Lambda;
@@ -106,6 +112,11 @@ double gal_wind_psd(const gal_wind_params *p, double f)
     if (!(f > 0)) return 0.0;
     double U = p->speed, sig2 = pow(p->intensity * U, 2), L = gal_wind_length_scale(p);
     double n = f * L / U;
+    if (p->component == GAL_WIND_VERTICAL) {
+        if (p->spectrum == GAL_WIND_VON_KARMAN) /* f S / sigma^2 = 4 n (1 + 755.2 n^2) / (1 + 283.2 n^2)^(11/6) */
+            return sig2 * 4.0 * L / U * (1.0 + 755.2 * n * n) / pow(1.0 + 283.2 * n * n, 11.0 / 6.0);
+        return sig2 * 4.0 * L / U / pow(1.0 + 6.0 * n, 5.0 / 3.0); /* Kaimal w (IEC 61400-1) */
+    }
     switch (p->spectrum) {
     case GAL_WIND_KAIMAL:     /* f S / sigma^2 = 4 n / (1 + 6 n)^(5/3) */
         return sig2 * 4.0 * L / U / pow(1.0 + 6.0 * n, 5.0 / 3.0);

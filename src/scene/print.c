@@ -114,7 +114,11 @@ static void print_wind_standards(const gal_scene *sc, FILE *fp)
     }
     if (sc->wind.basic_speed > 0) put_key(fp, sc, K_VB);
     if (sc->wind.length_scale > 0) put_key(fp, sc, K_LSCALE);
-    fprintf(fp, "vertical_turbulence = %s ; off | on (on: not generated yet)\n", sc->wind.vertical_turbulence ? "on" : "off");
+    fprintf(fp, "vertical_turbulence = %s ; off | on\n", sc->wind.vertical_turbulence ? "on" : "off");
+    if (!sc->wind.vertical_turbulence) return;
+    put_key(fp, sc, K_VINTENS);
+    put_key(fp, sc, K_VCOH);
+    if (sc->wind.vertical_length_scale > 0) put_key(fp, sc, K_VLSCALE);
 }
 
 static void print_wind_effects(const gal_scene *sc, FILE *fp)

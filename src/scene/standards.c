@@ -96,6 +96,35 @@ static int roughness(pstate *ps, double *z0, double *zmin)
     return 1;
 }
 
+/* the vertical component's keys only with it on, and it only with a turbulent field */
+static int vertical(pstate *ps)
+{
+    gal_scene *sc = ps->sc;
+    char kb[64];
+    static const int needs[] = {K_VCOH, K_VINTENS, K_VLSCALE};
+    if (!sc->wind.vertical_turbulence) {
+        for (size_t i = 0; i < sizeof needs / sizeof needs[0]; i++)
+            if (ps->given[needs[i]])
+                return scn_kfail(ps, needs[i], "only with [wind] vertical_turbulence = on; allowed: "
+                                 "not given");
+        return 1;
+    }
+    if (sc->wind.turbulence == GAL_TURB_NONE)
+        return scn_kfail(ps, K_VTURB, "no turbulent wind field; allowed: on only together with %s "
+                         "(kaimal, davenport, von_karman, en1991)", scn_sec_key(K_TURB, kb, sizeof kb));
+    return 1;
+}
+
+/* after the along-wind values are resolved: the vertical ones not given follow them (C_w = C,
+ * sigma_w = 0.5 sigma_u: IEC 61400-1 ed. 3 Annex C, Table C.1) */
+static int vertical_defaults(pstate *ps)
+{
+    gal_scene *sc = ps->sc;
+    if (!ps->given[K_VCOH]) sc->wind.vertical_coherence_decay = sc->wind.coherence_decay;
+    if (!ps->given[K_VINTENS]) sc->wind.vertical_intensity = 0.5 * sc->wind.intensity;
+    return 1;
+}
+
 int scn_wind_profile(pstate *ps)
 {
     gal_scene *sc = ps->sc;
@@ -111,16 +140,8 @@ int scn_wind_profile(pstate *ps)
     if (ps->given[K_VB] && !terrain)
         return scn_kfail(ps, K_VB, "no terrain; allowed: together with [wind] terrain or "
                          "roughness_length");
-    /* the vertical component w is not generated yet (src/loads/wind.c makes u only): refused
-     * rather than silently ignored */
-    if (sc->wind.vertical_turbulence)
-        return scn_kfail(ps, K_VTURB, "the vertical turbulence component is not generated yet; "
-                         "allowed: off");
-    if (ps->given[K_VCOH])
-        return scn_kfail(ps, K_VCOH, "only with [wind] vertical_turbulence = on; allowed: not "
-                         "given");
-    sc->wind.vertical_coherence_decay = sc->wind.coherence_decay;
-    if (!terrain) return 1;
+    if (!vertical(ps)) return 0;
+    if (!terrain) return vertical_defaults(ps);
     double z0, zmin, cr, iv, L;
     if (!roughness(ps, &z0, &zmin)) return 0;
     if (gal_terrain_profile(z0, zmin, sc->wind.height, &cr, &iv, &L) != GAL_OK)
@@ -130,5 +151,5 @@ int scn_wind_profile(pstate *ps)
     if (!ps->given[K_INTENS]) sc->wind.intensity = fmin(iv, 1.0);      /* I_v = 1 / ln(z/z0) */
     if (!ps->given[K_LSCALE] && sc->wind.turbulence == GAL_TURB_EN1991)
         sc->wind.length_scale = L;                                     /* Annex B, Eq. B.1 */
-    return 1;
+    return vertical_defaults(ps);
 }

@@ -7,6 +7,7 @@
  * Each effect is one term; gal_loads_list_make lists those that are on:
  *   the relative wind   mean_wind     src/loads/relwind.c     speed != 0 (ramp, reversal)
  *                       turbulence    src/loads/turbulence.c  a field u (nt > 1, nx > 0)
+ *                       vertical_turbulence  turbulence.c     a field w on the same grid
  *                       aero_damping  src/loads/relwind.c     aero_damping (minus the velocity)
  *   the section load    aero_drag, aero_lift, aero_moment  src/loads/section.c  by flags */
 #ifndef GALLOP_LOADS_H
@@ -22,17 +23,19 @@ extern "C" {
 
 struct gal_loads;
 
-/* A term of the relative wind at a section, in one of two forms:
+/* A term of the relative wind at a section, in one of three forms:
  *   speed:    its part of the along-wind speed (m/s) at time t (s) and span position x (m),
  *             before the wind's reversal; ramp is the mean wind's ramp factor at t (0..1);
- *   relative: a change of the relative wind w (m/s) of a section moving at rdot (m/s). */
+ *   relative: a change of the relative wind w (m/s) of a section moving at rdot (m/s);
+ *   vertical: its part of the vertical wind speed (m/s, up: +z) at t and x (not reversed). */
 typedef struct gal_loads_term {
     const char *name;   /* "mean_wind", or the scene's effect: "turbulence", "aero_damping" */
     double (*speed)(const struct gal_loads *L, double t, double x, double ramp);
     void (*relative)(const struct gal_loads *L, const double rdot[3], double w[3]);
+    double (*vertical)(const struct gal_loads *L, double t, double x, double ramp);
 } gal_loads_term;
 extern const gal_loads_term gal_loads_term_mean_wind, gal_loads_term_turbulence,
-    gal_loads_term_aero_damping;
+    gal_loads_term_vertical_turbulence, gal_loads_term_aero_damping;
 
 typedef struct gal_loads {
     const gal_aero_table *table;
@@ -49,6 +52,7 @@ typedef struct gal_loads {
     int nx, nt;
     double x0, dx, dt;       /* m, m, s */
     const double *u;         /* m/s, row-major by time: u[k * nx + j] */
+    const double *w;         /* m/s, the vertical fluctuation on the same grid, or NULL: none */
     /* the rod, for the full model's callback */
     const gal_rod *rod;
 } gal_loads;
@@ -58,7 +62,7 @@ typedef struct gal_loads {
  * and change (statics under the mean wind drops the turbulence, the onset sweep sets the speed),
  * so a list kept inside it could go stale. */
 typedef struct gal_loads_list {
-    const gal_loads_term *wind[3];      /* the relative wind's terms */
+    const gal_loads_term *wind[4];      /* the relative wind's terms */
     int nwind;
     const gal_aero_term *section[3];    /* the section load's terms */
     int nsection;

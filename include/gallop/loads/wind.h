@@ -1,4 +1,4 @@
-/* wind.h: stochastic along-wind turbulence u(x_j, t) at uniformly spaced points along a span
+/* wind.h: stochastic along-wind turbulence u(x_j, t) (or its vertical component w) at uniformly spaced points along a span
  * (DESIGN.md "Wind"), by the spectral representation method (Shinozuka & Deodatis 1991,
  * Deodatis 1996) with FFTW; seeded (GSL mt19937) and reproducible.
  *
@@ -21,6 +21,22 @@
  *     L = 300 m (z / 200 m)^0.52 (Eq. B.1 for terrain II, z0 = 0.05 m; a scene with a terrain
  *     gives its own L through length_scale: gallop/scene/terrain.h).
  * A length_scale > 0 in the parameters replaces the default L.
+ *
+ * ---- The vertical component w (component = GAL_WIND_VERTICAL; intensity is then sigma_w / U) ----
+ * kaimal, davenport, en1991: the Kaimal w-component of IEC 61400-1 (ed. 3, Annex C, Table C.1:
+ *     sigma_3 = 0.5 sigma_1, L_3 = 0.66 Lambda):
+ *     f S_w(f) / sigma_w^2 = 4 n / (1 + 6 n)^(5/3),    n = f L_w / U,   L_w = 0.66 Lambda
+ *     (z = 10 m: L_w = 4.62 m). Davenport (1961) and EN 1991-1-4 give no vertical spectrum: the
+ *     IEC Kaimal w-component stands in for them.
+ * von_karman: the transverse von Karman form (von Karman 1948; as in ESDU 85020 and IEC 61400-1
+ *     ed. 2 Annex B):
+ *     f S_w(f) / sigma_w^2 = 4 n (1 + 755.2 n^2) / (1 + 283.2 n^2)^(11/6),   n = f L_w / U,
+ *     with 283.2 = 4 x 70.8 and 755.2 = (8/3) 283.2 (the along-wind form's constant), and
+ *     L_w = L_u / 2 (isotropic turbulence: the transverse integral scale is half the
+ *     longitudinal one), L_u = 3.5 Lambda (z = 10 m: L_w = 12.25 m).
+ * A length_scale > 0 replaces L_w. The w field uses the same coherence form with its own decay C
+ * and is statistically independent of u (the u-w cross-spectrum, the Reynolds stress, is left
+ * out).
  *
  * ---- Coherence between two points dx apart (Davenport): coh(f) = exp(-C f dx / U) ----
  * For uniform spacing the coherence matrix Gamma_jk = r^|j-k|, r = exp(-C f dx / U), is that of an
@@ -46,6 +62,9 @@
 extern "C" {
 #endif
 
+/* Which velocity component a generator makes (the spectra above). */
+typedef enum { GAL_WIND_ALONG = 0, GAL_WIND_VERTICAL = 1 } gal_wind_component;
+
 /* Values match gal_turbulence in scene.h (GAL_TURB_KAIMAL = 1, ...). */
 typedef enum {
     GAL_WIND_KAIMAL = 1,
@@ -66,12 +85,13 @@ typedef struct gal_wind_params {
     double duration;        /* s, T: samples = round(T / dt) >= 16 */
     double time_step;       /* s, dt > 0 */
     unsigned long seed;     /* GSL mt19937 seed: same seed, same field */
+    gal_wind_component component; /* along-wind u (default) or vertical w: the spectrum's form */
 } gal_wind_params;
 
 typedef struct gal_wind gal_wind;
 
 /* Defaults: U = 10 m/s, I = 0.1, Kaimal, z = 10 m, L default, C = 10, 1 point, dx = 1 m,
- * T = 600 s, dt = 0.05 s, seed 1. */
+ * T = 600 s, dt = 0.05 s, seed 1, the along-wind component. */
 void gal_wind_params_default(gal_wind_params *p);
 
 /* Check parameters: GAL_OK or GAL_EINPUT with a message naming the field, value and range. */

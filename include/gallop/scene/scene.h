@@ -119,6 +119,8 @@ typedef struct gal_scene {
         double length_scale;      /* m, turbulence length scale; 0 = the spectrum's default */
         int vertical_turbulence;  /* 1: a vertical component w is generated as well */
         double vertical_coherence_decay; /* -, C_w in exp(-C_w f dx / U); default C of u */
+        double vertical_intensity;       /* -, sigma_w / U; default 0.5 intensity (IEC 61400-1) */
+        double vertical_length_scale;    /* m, L_w; 0 = the spectrum's (gallop/loads/wind.h) */
     } wind;
 
     struct {                      /* [bundle]: a phase of several sub-conductors held by spacers;
