@@ -35,6 +35,22 @@ static void test_table_columns(void)
         CHECK(sc.conductor.thermal_expansion > 18e-6 && sc.conductor.thermal_expansion < 20e-6,
               "%s: alpha %g", names[i], sc.conductor.thermal_expansion);
     }
+    /* the rows added from GO 95 Table 23 alone: d (in), bare weight (lb/ft) and RTS (lb) of the
+     * table, converted; their expansion and modulus unknown (no published value reached) */
+    const char *more[] = {"Lark", "Penguin", "Raven", "Turkey"};
+    const double d_in[] = {0.806, 0.563, 0.398, 0.198}, w_lbft[] = {0.6206, 0.2921, 0.1456, 0.0362},
+                 uts_lb[] = {19980, 8420, 4280, 1170};
+    for (int i = 0; i < 4; i++) {
+        char t[256];
+        snprintf(t, sizeof t, "[span]\nlength = 100\nhorizontal_tension = 2000\n"
+                 "[conductor]\nname = %s\n", more[i]);
+        CHECK(load(&sc, t) == GAL_OK, "%s: %s", more[i], gal_error_message());
+        CHECK_REL(sc.conductor.diameter, d_in[i] * 0.0254, 1e-4);
+        CHECK_REL(sc.conductor.mass_per_length, w_lbft[i] * 0.45359237 / 0.3048, 1e-4);
+        CHECK_REL(sc.conductor.rated_strength, uts_lb[i] * 4.4482216152605, 1e-4);
+        CHECK(sc.conductor.thermal_expansion == 0 && sc.conductor.final_modulus == 0,
+              "%s: expansion and modulus unknown", more[i]);
+    }
     /* Bersimis: not published in the sources used: 0 = unknown */
     CHECK(load(&sc, "[span]\nlength = 300\nhorizontal_tension = 2e4\n[conductor]\nname = Bersimis\n")
           == GAL_OK && sc.conductor.rated_strength == 0, "Bersimis without RTS");
