@@ -129,8 +129,9 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
         gal_json_obj_end(j);
     }
     gal_json_arr_end(j);
-    /* the rated strength: not in the scene yet (the conductor table's column is #17's inputs) */
-    return gal_cigre_json_run(j, sc, r, from, NAN);
+    /* the rated strength of the scene's conductor (0: unknown, its ratio left out) */
+    double rts = sc->conductor.rated_strength > 0 ? sc->conductor.rated_strength : NAN;
+    return gal_cigre_json_run(j, sc, r, from, rts);
 }
 
 /* Decimals of the time stamps: at least 6, and enough that consecutive samples dt_out apart
