@@ -44,11 +44,12 @@ csv_find_col() {
 # csv_rows FILE: number of data rows.
 csv_rows() { awk '/^#/ || !NF { next } h++ { n++ } END { print n + 0 }' "$1"; }
 
-# csv_pick FILE NAME...: the named columns, whitespace-separated, without header or comments, for
-# gnuplot; blank lines (gnuplot blocks) are kept. Fails (status 1, no output) if a column is missing.
+# csv_pick FILE NAME...: the named columns, whitespace-separated (CSV_PICK_SEP, e.g. a tab, for
+# cells that hold spaces), without header or comments, for gnuplot; blank lines (gnuplot blocks)
+# are kept. Fails (status 1, no output) if a column is missing.
 csv_pick() {
     local file=$1; shift
-    awk -F, -v names="$*" '
+    awk -F, -v names="$*" -v sep="${CSV_PICK_SEP:- }" '
         BEGIN { n = split(names, want, " ") }
         /^#/ { next }
         !hdr && NF {
@@ -60,7 +61,7 @@ csv_pick() {
         !NF { if (hdr) print ""; next }
         {
             line = ""
-            for (k = 1; k <= n; k++) line = line (k > 1 ? " " : "") $(at[want[k]])
+            for (k = 1; k <= n; k++) line = line (k > 1 ? sep : "") $(at[want[k]])
             print line
         }
         END { if (bad || !hdr) exit 1 }' "$file"

@@ -98,7 +98,8 @@ md_table() {
     local names="$*"
     out "| ${names// / | } |"
     out "|$(printf '%s\n' "$@" | sed 's/.*/---|/' | tr -d '\n')"
-    csv_pick "$file" "$@" | awk 'NF { line = "|"; for (i = 1; i <= NF; i++) line = line " " $i " |"; print line }' >> "$md"
+    # tab-separated: a cell may hold spaces ("simulate full"); a "|" in a cell is escaped
+    CSV_PICK_SEP=$'\t' csv_pick "$file" "$@" | awk -F'\t' 'NF { line = "|"; for (i = 1; i <= NF; i++) { c = $i; gsub(/\|/, "\\|", c); line = line " " c " |" }; print line }' >> "$md"
     out ""
 }
 
@@ -121,6 +122,51 @@ probe_col() {
     [ -n "$c" ] || c=$(csv_find_col "$1" "^p[0-9.]*_$2_")
     [ -n "$c" ] || c=$(csv_find_col "$1" "$2")
     printf '%s' "$c"
+}
+
+# psd_floor FILE "COL...": the largest value of those columns over 1e8 (the lower end of a PSD
+# panel: 8 decades, below which a spectrum is the numerical floor).
+psd_floor() {
+    awk -v cols="$2" 'BEGIN { n = split(cols, c, " ") }
+        NF { for (k = 1; k <= n; k++) if ($(c[k]) > m) m = $(c[k]) }
+        END { printf "%.6g\n", (m > 0) ? m / 1e8 : 1e-12 }' "$1"
+}
+
+# cigre_tables SUMMARY: the CIGRE TB 322 outputs of a run (gallop simulate's summary.json): the
+# galloping ellipse of each probe, the clearances to the neighbouring phases, the dynamic support
+# tensions with the maximum over the static tension and over the rated strength, the span's
+# amplitude beside the brochure's empirical envelope with its source.
+cigre_tables() {
+    local s=$1
+    [ -s "$s" ] && jq -e '.support_tensions' "$s" >/dev/null 2>&1 || return 0
+    out "#### CIGRE TB 322 outputs" ""
+    out "Galloping ellipse of each probe over its steady window (peak-to-peak extents along the principal axes of the orbit; tilt of the major axis from the horizontal; centre from the equilibrium, horizontal downwind and up)." ""
+    out "| probe (fraction of span) | from (s) | major axis p-p (m) | minor axis p-p (m) | tilt (deg) | centre horizontal (m) | centre vertical (m) |" "|---|---|---|---|---|---|---|"
+    jq -r '.probes[]? | select(.ellipse) | [.position, .ellipse.from_s, .ellipse.major_peak_to_peak_m, .ellipse.minor_peak_to_peak_m, .ellipse.tilt_deg, .ellipse.centre_horizontal_m, .ellipse.centre_vertical_m] | @tsv' "$s" |
+        while IFS=$'\t' read -r p f a b t cy cz; do
+            out "| $p | $(num %.1f "$f") | $(num %.4g "$a") | $(num %.4g "$b") | $(num %.3g "$t") | $(num %.4g "$cy") | $(num %.4g "$cz") |"
+        done
+    out ""
+    if jq -e '[.probes[]?.clearances[]?] | length > 0' "$s" >/dev/null 2>&1; then
+        out "Clearance the ellipse leaves to each neighbouring phase at rest (output.neighbour_phases; negative: the phase lies inside the ellipse)." ""
+        out "| probe | neighbour horizontal (m) | neighbour vertical (m) | clearance (m) |" "|---|---|---|---|"
+        jq -r '.probes[]? | .position as $p | .clearances[]? | [$p, .neighbour_horizontal_m, .neighbour_vertical_m, .clearance_m] | @tsv' "$s" |
+            while IFS=$'\t' read -r p y z c; do out "| $p | $(num %.4g "$y") | $(num %.4g "$z") | $(num %.4g "$c") |"; done
+        out ""
+    fi
+    local rts ratio
+    rts=$(jq -r '.support_tensions.rated_strength_n // empty' "$s")
+    ratio=$(jq -r '.support_tensions.max_over_rated_strength // empty' "$s")
+    out "Dynamic support tensions (both supports, the whole run; static: the start state)." ""
+    out "| min (N) | max (N) | static (N) | max / static | rated strength RTS (N) | max / RTS |" "|---|---|---|---|---|---|"
+    out "| $(num %.6g "$(jq -r .support_tensions.min_n "$s")") | $(num %.6g "$(jq -r .support_tensions.max_n "$s")") | $(num %.6g "$(jq -r .support_tensions.static_n "$s")") | $(num %.4g "$(jq -r .support_tensions.max_over_static "$s")") | ${rts:+$(num %.6g "$rts")}${rts:-unknown (no rated_strength)} | ${ratio:+$(num %.4g "$ratio")}${ratio:-n/a} |"
+    out ""
+    if jq -e '.cigre_envelope' "$s" >/dev/null 2>&1; then
+        out "The span's largest galloping amplitude (the largest major axis of the probes' ellipses) beside the brochure's empirical envelope for single conductors." ""
+        out "| formula | L / D | envelope p-p (m) | simulated p-p (m) | simulated / envelope |" "|---|---|---|---|---|"
+        out "| $(jq -r .cigre_envelope.formula "$s" | sed 's/|/\\|/g') | $(num %.5g "$(jq -r .cigre_envelope.span_over_diameter "$s")") | $(num %.4g "$(jq -r .cigre_envelope.envelope_peak_to_peak_m "$s")") | $(num %.4g "$(jq -r .cigre_envelope.simulated_peak_to_peak_m "$s")") | $(num %.3g "$(jq -r '.cigre_envelope.simulated_over_envelope // empty' "$s")") |"
+        out "" "Source of the envelope: $(jq -r .cigre_envelope.source "$s")" ""
+    fi
 }
 
 # ======================================================================================
@@ -285,17 +331,32 @@ EOF
             tss=$(jfind "$d/summary.json" time_to_steady_s)
             late="last quarter of the run"
             [ -n "$tss" ] && awk -v a="$tss" -v b="$l0" 'BEGIN { exit !(a + 0 <= b + 0) }' && late="last quarter of the run, after the time to steady ($(num %.0f "$tss") s)"
-            plot "orbit_$model" "${model^} model: orbit of the mid-span probe, first quarter of the run (left) and ${late} (right), axes to the same scale" 1100x560 <<EOF
+            # the CIGRE galloping ellipse of this probe (summary.json) over the late orbit
+            pos=${probe#p}
+            ell=$(jq -r --argjson p "$pos" '.probes[]? | select(.position == $p) | .ellipse
+                | "\(.centre_horizontal_m) \(.centre_vertical_m) \(.major_peak_to_peak_m / 2) \(.minor_peak_to_peak_m / 2) \(.tilt_deg) \(.from_s)"' \
+                "$d/summary.json" 2>/dev/null | head -n 1)
+            ellplot=""; ellcap=""
+            if [ -n "$ell" ]; then
+                read -r ecy ecz ea eb eth efrom <<<"$ell"
+                awk -v cy="$ecy" -v cz="$ecz" -v a="$ea" -v b="$eb" -v th="$eth" 'BEGIN {
+                    c = cos(th * 3.14159265358979 / 180); s = sin(th * 3.14159265358979 / 180)
+                    for (k = 0; k <= 360; k++) { t = k * 3.14159265358979 / 180; u = a * cos(t); v = b * sin(t)
+                        printf "%.9g %.9g\n", cy + c * u - s * v, cz + s * u + c * v } }' > "$dat/ellipse_$model.dat"
+                ellplot=", \"$dat/ellipse_$model.dat\" using 1:2 with lines lc rgb \"black\" dt 2 lw 1.5 title \"galloping ellipse (from $(num %.0f "$efrom") s)\""
+                ellcap="; dashed, the galloping ellipse (CIGRE TB 322: peak-to-peak axes, tilt and centre over the steady window, from $(num %.0f "$efrom") s)"
+            fi
+            plot "orbit_$model" "${model^} model: orbit of the mid-span probe, first quarter of the run (left) and ${late} (right), axes to the same scale${ellcap}" 1100x560 <<EOF
 set multiplot layout 1,2 title "${model^} model, $gtitle: orbit of probe $(esc "$probe") (seen along the span)"
 set xlabel "horizontal (m)"
 set ylabel "vertical (m)"
-set key top left
+set key below
 $(orbit_view "$dat/trace_$model.dat" "$t0" "$e1" 2 3)
 set title sprintf("early: %.1f to %.1f s", $t0, $e1) . scale
 plot "$dat/trace_$model.dat" using (\$1 <= $e1 ? \$2 : NaN):3 lc 1 title "orbit"
 $(orbit_view "$dat/trace_$model.dat" "$l0" "$t1" 2 3)
 set title sprintf("late: %.1f to %.1f s", $l0, $t1) . scale
-plot "$dat/trace_$model.dat" using (\$1 >= $l0 ? \$2 : NaN):3 lc 2 title "orbit"
+plot "$dat/trace_$model.dat" using (\$1 >= $l0 ? \$2 : NaN):3 lc 2 title "orbit"$ellplot
 unset multiplot
 EOF
         else
@@ -311,21 +372,33 @@ EOF
         pcols=$(csv_header "$psd" | tr ',' '\n' | grep -v '^frequency_hz$' | grep -E '^p0?\.50*_(vertical|horizontal|twist)' | tr '\n' ' ')
         [ -n "$pcols" ] || pcols=$(csv_header "$psd" | tr ',' '\n' | grep -v '^frequency_hz$' | tr '\n' ' ')
         csv_pick "$psd" frequency_hz $pcols > "$dat/psd_$model.dat"
-        pc="plot "; i=2
+        # one panel per unit: translations (m^2/Hz) and twist (deg^2/Hz); the legend names the
+        # motion; each panel shows 8 decades below its peak (below is the numerical floor)
+        pt=""; pr=""; tcols=""; rcols=""; i=2
         for c in $pcols; do
-            pc="$pc$( [ $i -gt 2 ] && printf ', ')\"$dat/psd_$model.dat\" using 1:(\$$i > 0 ? \$$i : NaN) lw 1.5 title \"$(esc "$c")\""
+            what=${c#*_}; what=${what%%_*}
+            line="\"$dat/psd_$model.dat\" using 1:(\$$i > 0 ? \$$i : NaN) lw 1.5 title \"$what\""
+            case $c in
+                *_deg2_per_hz) pr="$pr$( [ -n "$pr" ] && printf ', ')$line"; rcols="$rcols $i" ;;
+                *) pt="$pt$( [ -n "$pt" ] && printf ', ')$line"; tcols="$tcols $i" ;;
+            esac
             i=$((i + 1))
         done
-        plot "psd_$model" "${model^} model: power spectral density of the mid-span signals over the steady part of this run (gallop spectrum, Welch; log scale)" <<EOF
-set title "${model^} model, $gtitle: power spectral density"
+        xmax=$(awk -v m="$psd_fmax" 'NF { if ($1 > x) x = $1 } END { print (x > 0 && x < m) ? x : m }' "$dat/psd_$model.dat")
+        np=0; [ -n "$pt" ] && np=$((np + 1)); [ -n "$pr" ] && np=$((np + 1))
+        plot "psd_$model" "${model^} model: power spectral density of the mid-span probe's motion over the steady part of this run (gallop spectrum on trace.csv, Welch; log scale): translations (m^2/Hz), twist (deg^2/Hz)" 1000x$((300 * np + 60)) <<EOF
+set multiplot layout $np,1 title "${model^} model, $gtitle: power spectral density, mid-span probe"
 set xlabel "frequency (Hz)"
-set ylabel "PSD (unit^2/Hz: m^2/Hz, deg^2/Hz, N^2/Hz)"
 set logscale y
 set format y "10^{%L}"
-set xrange [0:$(awk -v m="$psd_fmax" 'NF { if ($1 > x) x = $1 } END { print (x > 0 && x < m) ? x : m }' "$dat/psd_$model.dat")]
-$pc
+set key top right
+set xrange [0:$xmax]
+$( [ -n "$pt" ] && printf 'set ylabel "PSD (m^2/Hz)"\nset yrange [%s:*]\nplot %s\n' "$(psd_floor "$dat/psd_$model.dat" "$tcols")" "$pt")
+$( [ -n "$pr" ] && printf 'set ylabel "PSD (deg^2/Hz)"\nset yrange [%s:*]\nplot %s\n' "$(psd_floor "$dat/psd_$model.dat" "$rcols")" "$pr")
+unset multiplot
 EOF
     fi
+    cigre_tables "$d/summary.json"
     json_details "$d/summary.json" "${model}/summary.json"
 done
 
@@ -376,7 +449,7 @@ EOF
 set multiplot layout 1,2 title "Full against reduced model, $gtitle: mid-span orbit"
 set xlabel "horizontal (m)"
 set ylabel "vertical (m)"
-set key top left
+set key below
 $(orbit_view "$dat/compare.dat" "$t0" "$e1" 4 2 5 3)
 set title sprintf("early: %.1f to %.1f s", $t0, $e1) . scale
 plot "$dat/compare.dat" using (\$1 <= $e1 ? \$4 : NaN):2 lc 1 title "full", "" using (\$1 <= $e1 ? \$5 : NaN):3 lc 2 dt 2 lw 1.5 title "reduced"
@@ -404,14 +477,19 @@ if [ -e "$a" ]; then
         out ""
         # one block per study, in order of first appearance; chosen points apart
         awk -v dat="$dat/accuracy.dat" -v ch="$dat/accuracy_chosen.dat" '
-            { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } k = $1; m[k]++; row[k, m[k]] = $5 " " $4 " " $3
+            { if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } k = $1; m[k]++
+              lab = $3                            # the effects study: which effect, not just "off"
+              if ($1 == "effects") { e = $2; sub(/^effects\.?/, "", e); lab = "\"" (e == "" ? "all on" : e " " $3) "\"" }
+              row[k, m[k]] = $5 " " $4 " " lab
               if ($6 == 1) print $5, $4, $3 > ch }
             END { printf "" > ch
                   for (i = 1; i <= n; i++) { k = order[i]; for (j = 1; j <= m[k]; j++) print row[k, j] > dat; printf "\n\n" > dat; print k } }' \
             "$dat/accuracy_rows.dat" > "$dat/accuracy_studies.txt"
         ac="plot "; i=0
         while read -r st; do
-            ac="$ac\"$dat/accuracy.dat\" index $i using 1:(\$2 > 0 ? \$2 : NaN) with linespoints pt 7 ps 1 lw 2 lc $((i + 1)) title \"${st//_/ }\", "
+            # a sweep is a line; the effects study (each effect off in turn) is points alone
+            sty="linespoints"; [ "$st" = effects ] && sty="points"
+            ac="$ac\"$dat/accuracy.dat\" index $i using 1:(\$2 > 0 ? \$2 : NaN) with $sty pt 7 ps 1 lw 2 lc $((i + 1)) title \"${st//_/ }\", "
             ac="$ac\"$dat/accuracy.dat\" index $i using 1:(\$2 > 0 ? \$2 : NaN):3 with labels offset char 0.8,0.8 left font \",8\" tc lt $((i + 1)) noenhanced notitle, "
             i=$((i + 1))
         done < "$dat/accuracy_studies.txt"
