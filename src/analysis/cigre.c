@@ -1,6 +1,11 @@
 /* cigre.c: the outputs of a galloping study as CIGRE TB 322 (2007) reports them (cigre.h): the
  * galloping ellipse (principal axes of the orbit, peak-to-peak extents along them), its clearance
- * to a neighbouring phase, the dynamic support tensions, the empirical amplitude envelope. */
+ * to a neighbouring phase, the dynamic support tensions, the empirical amplitude envelope.
+ * The envelope's coefficients (80, 500) could not be checked against TB 322 or Lilien & Havard
+ * (2000): searched 2026-11 through the project's search tools (pages, docs, code, issues:
+ * "TB 322 galloping amplitude envelope", "A/D = 80 ln(L/500D)", "Lilien Havard galloping data base
+ * prediction of maximum amplitudes", exact-string searches of public code); only the brochure's
+ * title page was reachable. The source string says so in every summary.json. */
 #include "gallop/analysis/cigre.h"
 #include "gallop/analysis/spectrum.h"
 #include "gallop/base/core.h"
@@ -10,8 +15,9 @@
 const char *const gal_cigre_envelope_source =
     "A/D = 80 ln(L/(500 D)), single conductors: J.-L. Lilien, D. G. Havard, Galloping data base on single and "
     "bundle conductors, prediction of maximum amplitudes, IEEE Trans. Power Delivery 15(2), 2000, 670-674; "
-    "CIGRE TB 322 (2007), section 4. Coefficients as recalled, not checked against the text: verify before "
-    "design use";
+    "CIGRE TB 322 (2007), section 4. NOT VERIFIED against either text: neither was reachable here (the brochure "
+    "and the paper are not public; searches of public pages, documentation, code and issue threads for the "
+    "formula found none); verify before design use";
 
 int gal_cigre_ellipse(const double *y, const double *z, size_t n, gal_ellipse *e)
 {
