@@ -84,7 +84,11 @@ trace() {
         f = dir "/summary.json"
         printf "{\n  \"command\": \"simulate\",\n  \"wall_time_s\": %g,\n  \"frequency_hz\": %g,\n", wall, f0 > f
         printf "  \"amplitude_m\": %g,\n  \"time_to_steady_s\": %g,\n  \"steps\": 1200,\n", 2 * A, ts > f
-        printf "  \"p0.5_vertical_m\": {\n    \"peak_frequency_hz\": %g,\n    \"peak_to_peak\": %g,\n    \"rms\": %g\n  }\n}\n", f0, 2 * A, A / sqrt(2) > f
+        printf "  \"p0.5_vertical_m\": {\n    \"peak_frequency_hz\": %g,\n    \"peak_to_peak\": %g,\n    \"rms\": %g\n  },\n", f0, 2 * A, A / sqrt(2) > f
+        # the CIGRE TB 322 members of gallop simulate (output/cigrereport.h), made up
+        printf "  \"probes\": [{\"position\": 0.25, \"ellipse\": {\"major_peak_to_peak_m\": %g, \"minor_peak_to_peak_m\": %g, \"tilt_deg\": 85, \"centre_horizontal_m\": 0.2, \"centre_vertical_m\": 0.1, \"from_s\": %g},\n    \"clearances\": [{\"neighbour_horizontal_m\": 0, \"neighbour_vertical_m\": 4, \"clearance_m\": 1.5}]}],\n", 2 * A, 0.1 * A, ts > f
+        printf "  \"support_tensions\": {\"min_n\": 20000, \"max_n\": 69390, \"static_n\": 30000, \"max_over_static\": 2.313, \"rated_strength_n\": 138780, \"max_over_rated_strength\": 0.5, \"over\": \"both supports\"},\n" > f
+        printf "  \"cigre_envelope\": {\"formula\": \"A/D = 80 ln(L/(500 D))\", \"source\": \"made up\", \"span_over_diameter\": 10661, \"envelope_peak_to_peak_m\": 6.92, \"simulated_peak_to_peak_m\": %g, \"simulated_over_envelope\": %g}\n}\n", 2 * A, 2 * A / 6.92 > f
     }'
 }
 trace "$out/full" 0.4812 1.50 30 42.0

@@ -159,7 +159,8 @@ cigre_tables() {
     ratio=$(jq -r '.support_tensions.max_over_rated_strength // empty' "$s")
     out "Dynamic support tensions (both supports, the whole run; static: the start state)." ""
     out "| min (N) | max (N) | static (N) | max / static | rated strength RTS (N) | max / RTS |" "|---|---|---|---|---|---|"
-    out "| $(num %.6g "$(jq -r .support_tensions.min_n "$s")") | $(num %.6g "$(jq -r .support_tensions.max_n "$s")") | $(num %.6g "$(jq -r .support_tensions.static_n "$s")") | $(num %.4g "$(jq -r .support_tensions.max_over_static "$s")") | ${rts:+$(num %.6g "$rts")}${rts:-unknown (no rated_strength)} | ${ratio:+$(num %.4g "$ratio")}${ratio:-n/a} |"
+    if [ -n "$rts" ]; then rts=$(num %.6g "$rts"); ratio=$(num %.4g "$ratio"); else rts="unknown (no rated_strength)"; ratio="n/a"; fi
+    out "| $(num %.6g "$(jq -r .support_tensions.min_n "$s")") | $(num %.6g "$(jq -r .support_tensions.max_n "$s")") | $(num %.6g "$(jq -r .support_tensions.static_n "$s")") | $(num %.4g "$(jq -r .support_tensions.max_over_static "$s")") | $rts | $ratio |"
     out ""
     if jq -e '.cigre_envelope' "$s" >/dev/null 2>&1; then
         out "The span's largest galloping amplitude (the largest major axis of the probes' ellipses) beside the brochure's empirical envelope for single conductors." ""

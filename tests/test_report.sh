@@ -38,6 +38,17 @@ check "mode table lists the 7 selected modes and no unselected one" \
     test "$(grep -cE '^\| [0-9]+ \| (vertical|horizontal|torsional|axial) \|' "$fx/report.md")" -eq 7
 check "torsion table has 4 rows" test "$(grep -cE '^\| (0\.5|1|2|4) \| [0-9]' "$fx/report.md")" -eq 4
 check "compare table shows the speedup" grep -q '^| speedup | 46.7 |' "$fx/report.md"
+check "report.md has the CIGRE TB 322 outputs of each run" test "$(grep -c '^#### CIGRE TB 322 outputs' "$fx/report.md")" -eq 2
+check "CIGRE: support tensions with the rated strength and max / RTS" grep -q '^| 20000 | 69390 | 30000 | 2.313 | 138780 | 0.5 |$' "$fx/report.md"
+check "CIGRE: the clearance to the neighbouring phase" grep -q '^| 0.25 | 0 | 4 | 1.5 |$' "$fx/report.md"
+# md_tables FILE: every Markdown table row has as many cells as its header (escaped \| aside)
+md_tables() {
+    awk '{ l = $0; gsub(/\\\|/, "", l) }
+         /^\|/ { n = gsub(/\|/, "|", l) - 1; if (!intable) { intable = 1; h = n } else if (n != h) { print FILENAME ":" NR ": " n " cells, header " h; bad = 1 } next }
+         { intable = 0 }
+         END { exit bad }' "$1"
+}
+check "every Markdown table of the fixture's report is well formed" md_tables "$fx/report.md"
 if [ $has_gnuplot = 1 ]; then
     for f in equilibrium modes_vertical modes_horizontal modes_torsional trace_full orbit_full psd_full \
              trace_reduced orbit_reduced psd_reduced compare_traces compare_orbits accuracy torsion_envelope; do
