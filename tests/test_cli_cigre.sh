@@ -2,7 +2,8 @@
 # test_cli_cigre.sh: the CIGRE TB 322 tension outputs of `gallop simulate` in summary.json: with a
 # conductor whose rated strength is known (Drake) support_tensions holds rated_strength_n (the
 # table's) and max_over_rated_strength = max_n / rated_strength_n; with one whose rated strength
-# is unknown (Grosbeak) both keys are absent (never a NaN); a --set rated_strength is used.
+# is unknown (Grosbeak) both keys are absent (never a NaN); a --set rated_strength is used; a bundle's
+# strength is its sub-conductors'.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
 pass=0; fail=0
@@ -42,6 +43,12 @@ fi
 if run given --set conductor.rated_strength=100000; then
     jq -e '.support_tensions.rated_strength_n == 100000' "$tmp/given/summary.json" >/dev/null \
         && ok "a given rated_strength is the one used" || bad "given: $(jq -c .support_tensions "$tmp/given/summary.json")"
+fi
+# a quad bundle: its tensions are the bundle's, set against four sub-conductors' strength
+if run quad --set bundle.subconductors=4 --set bundle.separation=0.457; then
+    jq -e '.support_tensions.rated_strength_n == 4 * 138780 and .bundle.subconductors == 4' "$tmp/quad/summary.json" \
+        >/dev/null && ok "quad bundle: rated_strength_n = 4 x 138780 N" \
+        || bad "quad: $(jq -c '[.support_tensions, .bundle]' "$tmp/quad/summary.json")"
 fi
 echo "#summary $pass $fail"
 [ "$fail" -eq 0 ]

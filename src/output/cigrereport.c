@@ -84,6 +84,9 @@ int gal_cigre_json_run(gal_json *j, const gal_scene *sc, const gal_sim_result *r
     gal_json_obj_begin(j);
     gal_json_kv_str(j, "formula", "A/D = 80 ln(L/(500 D)), A peak to peak, D bare conductor diameter");
     gal_json_kv_str(j, "source", gal_cigre_envelope_source);
+    if (sc->bundle.subconductors > 1) /* the brochure's bundle envelopes differ: not applied */
+        gal_json_kv_str(j, "applies_to", "single conductors: this scene is a bundle, whose envelope "
+                        "the brochure gives separately (not applied here); D is one sub-conductor's");
     gal_json_kv_num(j, "span_over_diameter", L / D);
     gal_json_kv_num(j, "envelope_peak_to_peak_m", env);
     gal_json_kv_num(j, "simulated_peak_to_peak_m", amax);

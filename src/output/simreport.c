@@ -130,7 +130,9 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
     }
     gal_json_arr_end(j);
     /* the rated strength of the scene's conductor (0: unknown, its ratio left out) */
-    double rts = sc->conductor.rated_strength > 0 ? sc->conductor.rated_strength : NAN;
+    /* the tensions of a bundle are the bundle's: set them against its sub-conductors' strength */
+    double rts = sc->conductor.rated_strength > 0 ? sc->conductor.rated_strength * sc->bundle.subconductors
+                                                  : NAN;
     return gal_cigre_json_run(j, sc, r, from, rts);
 }
 
