@@ -205,6 +205,7 @@ for scene in "${scenes[@]}"; do
 
     [ -s "$notes" ] || rm -f "$notes"
     if bash "$here/plot_scene.sh" "$d" "$name"; then :; else status=1; fi
+    if [ -s "$d/accuracy/front.csv" ]; then bash "$here/plot_front.sh" "$d/accuracy" "$d/report.md" || status=1; fi
     echo "  report: $d/report.md" >&2
     echo "- [$name]($name/report.md)" >> "$index"
 done

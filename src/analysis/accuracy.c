@@ -16,19 +16,24 @@
 #include <stdlib.h>
 #include <string.h>
 
-const char *const gal_acc_study_names[GAL_ACC_NSTUDY] = {"elements", "modes", "time_step", "tolerance", "effects"};
+const char *const gal_acc_study_names[GAL_ACC_NSTUDY] = {"elements", "modes", "time_step", "tolerance", "effects",
+                                                          "front"};
 
 void gal_accuracy_default_opts(gal_acc_opts *o)
 {
     o->tolerance = 0.01;
-    o->studies = (1u << GAL_ACC_NSTUDY) - 1;
+    o->studies = 1u << GAL_ACC_FRONT;
     o->repeats = 3;
     o->progress = 0;
+    o->budget_s = 0;
+    o->seeds = 3;
+    o->max_levels = 3;
 }
 
 void gal_accuracy_clear(gal_acc_result *r)
 {
     free(r->row);
+    free(r->front.pt);
     memset(r, 0, sizeof *r);
 }
 
@@ -308,13 +313,18 @@ int gal_accuracy_run(const gal_scene *sc, const gal_acc_opts *opts, gal_acc_resu
     r->string_hz = NAN;
     if (!(o.tolerance > 0 && o.tolerance < 1))
         return gal_error(GAL_EINPUT, "accuracy: tolerance %g; allowed: 0 < tolerance < 1", o.tolerance);
+    if (!(o.budget_s >= 0) || o.seeds < 1 || o.seeds > 64 || o.max_levels < 1 || o.max_levels > 8)
+        return gal_error(GAL_EINPUT, "accuracy: budget %g s, seeds %d, levels %d; allowed: budget >= 0, 1 <= seeds "
+                         "<= 64, 1 <= levels <= 8", o.budget_s, o.seeds, o.max_levels);
     if (!(o.studies & ((1u << GAL_ACC_NSTUDY) - 1)))
         return gal_error(GAL_EINPUT, "accuracy: no study selected");
     r->tolerance = o.tolerance;
     double t0 = gal_wall_time();
     int st = GAL_OK;
     double fhi = 0;
+    r->front.chosen = -1;
     unsigned dyn = (1u << GAL_ACC_MODES) | (1u << GAL_ACC_TIME_STEP) | (1u << GAL_ACC_TOLERANCE) | (1u << GAL_ACC_EFFECTS);
+    /* (the front study finds its own sampling) */
     /* the dynamic studies share the sampling of the scene's own run */
     gal_scene s = *sc;
     if (o.studies & dyn) {
@@ -332,9 +342,10 @@ int gal_accuracy_run(const gal_scene *sc, const gal_acc_opts *opts, gal_acc_resu
         case GAL_ACC_MODES: st = gal_acc_study_modes(&s, &o, r); break;
         case GAL_ACC_TIME_STEP: st = gal_acc_study_sweep(&s, &o, r, GAL_ACC_TIME_STEP, 1.0 / fhi); break;
         case GAL_ACC_TOLERANCE: st = gal_acc_study_sweep(&s, &o, r, GAL_ACC_TOLERANCE, 1.0 / fhi); break;
+        case GAL_ACC_FRONT: st = gal_acc_study_front(sc, &o, r); break;
         default: st = gal_acc_study_effects(&s, &o, r); break;
         }
-        if (!st) choose(r, (gal_acc_study)k);
+        if (!st && k != GAL_ACC_FRONT) choose(r, (gal_acc_study)k);
     }
     r->wall_time_s = gal_wall_time() - t0;
     return st;

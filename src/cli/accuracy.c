@@ -1,4 +1,5 @@
-/* cli/accuracy.c: `gallop accuracy SCENE [-o DIR] [--set s.k=v]... [--tolerance E] [--study NAME]...`
+/* cli/accuracy.c: `gallop accuracy SCENE [-o DIR] [--set s.k=v]... [--tolerance E] [--study NAME]...
+ * [--budget S] [--seeds N] [--levels N]`
  * (issue 7): what accuracy costs in time for the user's own span: accuracy.csv, summary.json and
  * a table on stdout (DESIGN.md "Command line"). */
 #include <stdio.h>
@@ -35,7 +36,23 @@ static int add_studies(const char *list, unsigned *mask)
     return 0;
 }
 
-/* --study NAME... and --tolerance E into the options */
+/* a number option in [lo, hi] into *v (untouched when absent) */
+static int num_option(const gal_cli_command *c, const gal_cli_args *a, const char *name, double lo, double hi,
+                      double *v)
+{
+    const char *s = gal_cli_value(c, a, name);
+    if (!s) return 0;
+    char *end, msg[128];
+    double x = strtod(s, &end);
+    if (end == s || *end || !(x >= lo && x <= hi)) {
+        snprintf(msg, sizeof msg, "--%s: want a number in [%g, %g], got", name, lo, hi);
+        return bad(msg, s);
+    }
+    *v = x;
+    return 0;
+}
+
+/* --study NAME..., --tolerance E, --budget S, --seeds N, --levels N into the options */
 static int own_options(const gal_cli_command *c, const gal_cli_args *a, gal_acc_opts *o)
 {
     unsigned mask = 0;
@@ -53,7 +70,13 @@ static int own_options(const gal_cli_command *c, const gal_cli_args *a, gal_acc_
         if (end == v || *end || !(o->tolerance > 0 && o->tolerance < 1))
             return bad("--tolerance: want a relative error in (0, 1), got", v);
     }
-    return 0;
+    double seeds = o->seeds, levels = o->max_levels;
+    int rc = num_option(c, a, "budget", 0, 1e7, &o->budget_s);
+    if (!rc) rc = num_option(c, a, "seeds", 1, 64, &seeds);
+    if (!rc) rc = num_option(c, a, "levels", 1, 8, &levels);
+    if (!rc && (seeds != (int)seeds || levels != (int)levels)) rc = bad("--seeds and --levels want whole numbers", NULL);
+    o->seeds = (int)seeds, o->max_levels = (int)levels;
+    return rc;
 }
 
 int gal_cli_accuracy(int argc, char **argv)
@@ -65,7 +88,7 @@ int gal_cli_accuracy(int argc, char **argv)
     int rc = gal_cli_parse(c, argc, argv, &args);
     if (!rc) rc = own_options(c, &args, &o);
     if (rc) return rc;
-    o.progress = isatty(2);
+    o.progress = isatty(2) || o.budget_s > 0; /* a long study says where it is */
     gal_scene sc;
     const char *outdir = NULL;
     rc = gal_cli_scene(c, &args, &sc, &outdir);
@@ -75,7 +98,8 @@ int gal_cli_accuracy(int argc, char **argv)
     if (!st) {
         gal_accuracy_print(stdout, &r);
         st = gal_accuracy_write(outdir, &sc, &r);
-        if (!st) printf("files: %s/{accuracy.csv,summary.json}\n", outdir);
+        if (!st) printf("files: %s/{accuracy.csv,%ssummary.json}\n", outdir,
+                        r.study[GAL_ACC_FRONT].ran ? "front.csv," : "");
     }
     if (st) fprintf(stderr, "gallop accuracy: %s\n", gal_error_message());
     gal_accuracy_clear(&r);

@@ -4,6 +4,7 @@
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
 #include "gallop/output/outset.h"
+#include "output/accreport_int.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -51,6 +52,15 @@ static int write_csv(gal_outset *o, const gal_acc_result *r)
         fprintf(fp, "%s,%s,%s,", gal_acc_study_names[w->study], w->setting, w->value);
         csv_num(fp, w->error);
         fprintf(fp, ",%.6g,%d\n", w->wall_time_s, w->chosen);
+    }
+    /* the front study's points: setting = what they vary, value = the configuration (no spaces) */
+    for (int i = 0; i < r->front.n; i++) {
+        const gal_acc_point *p = r->front.pt + i;
+        fprintf(fp, "front,%s,", p->group);
+        for (const char *c = p->label; *c; c++) fputc(*c == ' ' ? '_' : *c, fp);
+        fputc(',', fp);
+        csv_num(fp, p->error);
+        fprintf(fp, ",%.6g,%d\n", p->wall_time_s, i == r->front.chosen);
     }
     return gal_outset_close(o, fp);
 }
@@ -110,11 +120,15 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_acc_resul
     gal_json_key(j, "studies");
     gal_json_obj_begin(j);
     for (int s = 0; s < GAL_ACC_NSTUDY; s++) {
-        if (!r->study[s].ran) continue;
+        if (!r->study[s].ran || s == GAL_ACC_FRONT) continue;
         gal_json_key(j, gal_acc_study_names[s]);
         json_study(j, r, s);
     }
     gal_json_obj_end(j);
+    if (r->study[GAL_ACC_FRONT].ran) {
+        gal_json_key(j, "front");
+        gal_acc_front_json(j, r);
+    }
     return GAL_OK;
 }
 
@@ -124,6 +138,7 @@ int gal_accuracy_write(const char *dir, const gal_scene *sc, const gal_acc_resul
     int st = gal_outset_begin(&o, dir, "accuracy");
     if (!st) st = gal_outset_scene(o, sc);
     if (!st) st = write_csv(o, r);
+    if (!st && r->study[GAL_ACC_FRONT].ran) st = gal_acc_front_csv(o, r);
     if (!st) st = write_summary(o, sc, r);
     if (!st) st = gal_outset_commit(o);
     gal_outset_free(o);
@@ -132,6 +147,11 @@ int gal_accuracy_write(const char *dir, const gal_scene *sc, const gal_acc_resul
 
 void gal_accuracy_print(FILE *fp, const gal_acc_result *r)
 {
+    if (r->study[GAL_ACC_FRONT].ran) gal_acc_front_print(fp, r);
+    if (r->n == 0) {
+        fprintf(fp, "total wall time %.3g s\n", r->wall_time_s);
+        return;
+    }
     fprintf(fp, "%-10s %-22s %-10s %12s %12s %12s  %s\n", "study", "setting", "value", "error %", "wall s", "build s", "");
     for (int i = 0; i < r->n; i++) {
         const gal_acc_row *w = r->row + i;
@@ -141,7 +161,7 @@ void gal_accuracy_print(FILE *fp, const gal_acc_result *r)
     }
     fprintf(fp, "\ntolerance %.3g%%\n", 100 * r->tolerance);
     for (int s = 0; s < GAL_ACC_NSTUDY; s++)
-        if (r->study[s].ran) {
+        if (r->study[s].ran && s != GAL_ACC_FRONT) {
             fprintf(fp, "%-10s %s\n", gal_acc_study_names[s], r->study[s].buys);
             if (r->study[s].note[0]) fprintf(fp, "%-10s note: %s\n", "", r->study[s].note);
         }

@@ -18,6 +18,8 @@ typedef enum {
     GAL_ACC_TIME_STEP, /* full model: simulation.time_step = T/10 .. T/80 against T/160 */
     GAL_ACC_TOLERANCE, /* reduced model: simulation.tolerance 1e-4 .. 1e-9 against 1e-11 */
     GAL_ACC_EFFECTS,   /* reduced model with one effect off at a time against all on */
+    GAL_ACC_FRONT,     /* every choice against a converged full-model reference: the Pareto front
+                        * of error against wall time (accuracy_front.c; the default study) */
     GAL_ACC_NSTUDY
 } gal_acc_study;
 
@@ -28,6 +30,10 @@ typedef struct gal_acc_opts {
     unsigned studies;   /* bit (1u << study) per study to run; default all */
     int repeats;        /* timing repeats (median) for settings cheaper than 1 s; default 3 */
     int progress;       /* 1: one line per setting on stderr */
+    double budget_s;    /* front: wall-time limit of the whole study, s; 0: none (a fixed set) */
+    int seeds;          /* front, turbulent wind: seeds the statistics are taken over; default 3 */
+    int max_levels;     /* front: reference refinements at most (elements x2 and step /2 each);
+                         * default 3 */
 } gal_acc_opts;
 
 /* One setting of one study. */
@@ -61,6 +67,74 @@ typedef struct gal_acc_summary {
     char note[512];       /* what went wrong on the way (a requested reference that failed), or "" */
 } gal_acc_summary;
 
+/* ---- the front study ---- */
+
+/* The measures every configuration is scored on (at mid-span, over the reference's steady window;
+ * amplitudes are RMS values (smooth in the discretization, and the statistic of a turbulent run);
+ * in turbulent wind every measure is averaged over the seeds). */
+typedef enum {
+    GAL_ACC_M_FREQUENCY,  /* Hz: dominant frequency of the larger translation (vertical or horizontal) */
+    GAL_ACC_M_VERTICAL,   /* m: vertical amplitude, RMS about the mean over the window */
+    GAL_ACC_M_HORIZONTAL, /* m: horizontal amplitude (RMS) */
+    GAL_ACC_M_TWIST,      /* deg: twist amplitude (RMS) */
+    GAL_ACC_M_TENSION,    /* N: largest support tension over the steady window */
+    GAL_ACC_M_STEADY,     /* s: time to steady galloping (no order: compared directly) */
+    GAL_ACC_NMEAS
+} gal_acc_measure;
+
+extern const char *const gal_acc_measure_names[GAL_ACC_NMEAS];
+
+/* One configuration: what a run chooses. */
+typedef struct gal_acc_config {
+    int reduced;          /* 0: full model; 1: the recomputed reduced model */
+    int elements;         /* model.elements */
+    int modes[3];         /* reduced: modes vertical, horizontal, torsional */
+    double time_step;     /* s (divides the study's output interval) */
+    int effect_off;       /* a gal_effect switched off, or -1 */
+} gal_acc_config;
+
+typedef struct gal_acc_point {
+    gal_acc_config c;
+    char label[96];       /* e.g. "full N=80 h=0.0125", "reduced 3/2/1 N=80 h=0.0125", "full -aero_lift" */
+    char group[16];       /* what it varies: reference, model, elements, time_step, modes, effect, combined */
+    double value[GAL_ACC_NMEAS]; /* the measures (NaN: not measured) */
+    double err[GAL_ACC_NMEAS];   /* relative error against the reference (NaN: not scored) */
+    double error;         /* the worst scored measure (+inf when the run failed) */
+    double wall_time_s;   /* set-up (model, statics, modes) + integration, all seeds */
+    int on_front;         /* 1: no other point is both cheaper and at least as accurate */
+    int predicted;        /* combined point chosen from a prediction (additive errors) */
+    double predicted_error, predicted_time_s;
+    char failed[256];
+} gal_acc_point;
+
+typedef struct gal_acc_front {
+    int n, cap;
+    gal_acc_point *pt;
+    /* the reference: full model refined (elements x2, step /2) until no scored measure changes
+     * by more than a tenth of the tolerance, then Richardson-extrapolated */
+    int levels;                           /* refinements run (finest level = levels - 1) */
+    int ref_elements[8];
+    double ref_time_step[8];              /* s */
+    double ref_level_value[8][GAL_ACC_NMEAS];
+    double ref_level_wall_s[8];
+    double ref_value[GAL_ACC_NMEAS];      /* the reference values the errors are taken against */
+    double ref_error[GAL_ACC_NMEAS];      /* their estimated relative error */
+    double ref_change[GAL_ACC_NMEAS];     /* relative change over the last refinement */
+    double order[GAL_ACC_NMEAS];          /* observed order of the refinement (NaN: not enough levels) */
+    int scored[GAL_ACC_NMEAS];            /* 1: the measure is scored (finite, above its floor) */
+    int converged;                        /* every scored change below tolerance / 10 */
+    char ref_note[256];
+    int nseeds;
+    double output_interval_s, steady_from_s, base_time_step_s;
+    int base_elements;
+    /* --tolerance: the cheapest point within it, checked by a second run */
+    int chosen;                           /* index, -1 none */
+    gal_acc_point check;                  /* the check run of the chosen configuration */
+    int checked;
+    char effects[1024];                   /* the effects that may be switched off, and why not others */
+    char note[256];                       /* budget exhausted, study incomplete... */
+} gal_acc_front;
+
 typedef struct gal_acc_result {
     int n, cap;
     gal_acc_row *row;
@@ -68,6 +142,7 @@ typedef struct gal_acc_result {
     double tolerance;
     double string_hz;     /* first out-of-plane string frequency, Hz (NaN if no cable theory) */
     double wall_time_s;   /* the whole sweep */
+    gal_acc_front front;  /* the front study */
 } gal_acc_result;
 
 void gal_accuracy_default_opts(gal_acc_opts *o);
