@@ -60,8 +60,10 @@ static int run_point(acc_study *S, const char *group, const gal_acc_config *c)
         gal_acc_config_label(c, lab, sizeof lab);
         if (S->o->progress) fprintf(stderr, "accuracy: front: skipped %s (about %.3g s, budget left %.3g s)\n", lab,
                                     need, left);
-        snprintf(F->note, sizeof F->note, "the budget of %.4g s skipped some configurations (the first: %s)",
-                 S->o->budget_s, lab);
+        size_t n = strlen(F->note);
+        if (!strstr(F->note, "budget"))
+            snprintf(F->note + n, sizeof F->note - n, "%sthe budget of %.4g s skipped some configurations (the "
+                     "first: %s)", n ? "; " : "", S->o->budget_s, lab);
         return -1;
     }
     gal_acc_point *p = gal_acc_point_add(F);
@@ -243,7 +245,7 @@ static int combined(acc_study *S, const gal_acc_config *base)
     for (int k = 0; k < cap; k++) {
         mark_front(F);
         gal_acc_config c;
-        double e, t;
+        double e = 0, t = 0;
         if (!next_combined(S, base, &c, &e, &t)) break;
         int i = run_point(S, "combined", &c);
         if (i == -2) return GAL_ENOMEM;
@@ -270,7 +272,7 @@ static void choose_and_check(acc_study *S)
     if (F->chosen < 0) return;
     gal_acc_point *c = &F->check;
     memset(c, 0, sizeof *c);
-    for (int k = 0; k < GAL_ACC_NMEAS; k++) c->value[k] = c->err[k] = NAN;
+    for (int k = 0; k < GAL_ACC_NMEAS; k++) c->value[k] = c->err[k] = c->spread[k] = NAN;
     snprintf(c->group, sizeof c->group, "check");
     gal_acc_config cfg = F->pt[F->chosen].c;
     gal_acc_config_run(S, &cfg, F->steady_from_s, c);
@@ -283,6 +285,7 @@ static void effects_text(acc_study *S)
 {
     gal_acc_front *F = S->F;
     double E = S->o->tolerance, t0 = F->ref_level_wall_s[0];
+    const double *b = F->ref_level_value[0]; /* the base: what switching the effect off changes */
     size_t len = 0;
     F->effects[0] = 0;
     for (int i = 0; i < F->n; i++) {
@@ -290,14 +293,20 @@ static void effects_text(acc_study *S)
         if (p->c.effect_off < 0) continue;
         const char *name = gal_effect_names[p->c.effect_off];
         double save = 1 - p->wall_time_s / t0;
-        int worst = 0;
-        for (int k = 0; k < GAL_ACC_NMEAS; k++)
-            if (F->scored[k] && (!F->scored[worst] || p->err[k] > p->err[worst])) worst = k;
+        int worst = 0, wb = 0;
+        double db = 0;
+        for (int k = 0; k < GAL_ACC_NMEAS; k++) {
+            if (!F->scored[k]) continue;
+            if (!F->scored[worst] || p->err[k] > p->err[worst]) worst = k;
+            double d = gal_acc_relerr(p->value[k], b[k]);
+            if (d > db || !F->scored[wb]) db = d, wb = k;
+        }
         char line[256];
         if (p->failed[0]) snprintf(line, sizeof line, "%s: keep on (the run without it failed); ", name);
         else if (p->error > E)
-            snprintf(line, sizeof line, "%s: keep on (off changes the %s by %.3g%% > %.3g%%); ", name,
-                     gal_acc_measure_names[worst], 100 * p->error, 100 * E);
+            snprintf(line, sizeof line, "%s: keep on (off: %s off the reference by %.3g%% > %.3g%%; "
+                     "%s changed by %.3g%% from the base); ", name, gal_acc_measure_names[worst], 100 * p->error,
+                     100 * E, gal_acc_measure_names[wb], 100 * db);
         else if (save < MIN_SAVING)
             snprintf(line, sizeof line, "%s: keep on (off stays within %.3g%% but saves only %.0f%% of the time, "
                      "under %.0f%%); ", name, 100 * E, 100 * save, 100 * MIN_SAVING);

@@ -99,6 +99,7 @@ typedef struct gal_acc_point {
     char group[16];       /* what it varies: reference, model, elements, time_step, modes, effect, combined */
     double value[GAL_ACC_NMEAS]; /* the measures (NaN: not measured) */
     double err[GAL_ACC_NMEAS];   /* relative error against the reference (NaN: not scored) */
+    double spread[GAL_ACC_NMEAS];/* over the seeds: the standard error of the mean, relative (NaN: one seed) */
     double error;         /* the worst scored measure (+inf when the run failed) */
     double wall_time_s;   /* set-up (model, statics, modes) + integration, all seeds */
     int on_front;         /* 1: no other point is both cheaper and at least as accurate */
@@ -118,8 +119,11 @@ typedef struct gal_acc_front {
     double ref_level_value[8][GAL_ACC_NMEAS];
     double ref_level_wall_s[8];
     double ref_value[GAL_ACC_NMEAS];      /* the reference values the errors are taken against */
-    double ref_error[GAL_ACC_NMEAS];      /* their estimated relative error */
+    double ref_error[GAL_ACC_NMEAS];      /* their estimated relative error: the finest level's
+                                           * Richardson estimate, and in turbulent wind at least
+                                           * its standard error over the seeds */
     double ref_change[GAL_ACC_NMEAS];     /* relative change over the last refinement */
+    double ref_spread[GAL_ACC_NMEAS];     /* the finest level's standard error over the seeds */
     double order[GAL_ACC_NMEAS];          /* observed order of the refinement (NaN: not enough levels) */
     int scored[GAL_ACC_NMEAS];            /* 1: the measure is scored (finite, above its floor) */
     int converged;                        /* every scored change below tolerance / 10 */
@@ -132,7 +136,7 @@ typedef struct gal_acc_front {
     gal_acc_point check;                  /* the check run of the chosen configuration */
     int checked;
     char effects[1024];                   /* the effects that may be switched off, and why not others */
-    char note[256];                       /* budget exhausted, study incomplete... */
+    char note[512];                       /* turbulent wind, budget exhausted... */
 } gal_acc_front;
 
 typedef struct gal_acc_result {
