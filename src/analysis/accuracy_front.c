@@ -161,7 +161,14 @@ static void choose_scored(acc_study *S)
     F->scored[GAL_ACC_M_HORIZONTAL] &= v[GAL_ACC_M_HORIZONTAL] >= 1e-3 * tr && v[GAL_ACC_M_HORIZONTAL] > 1e-9;
     F->scored[GAL_ACC_M_TWIST] &= v[GAL_ACC_M_TWIST] >= 0.0035; /* deg RMS: 0.01 deg peak-to-peak */
     double T = 1.0 / v[GAL_ACC_M_FREQUENCY], ts = v[GAL_ACC_M_STEADY];
-    F->scored[GAL_ACC_M_STEADY] &= !S->turbulent && isfinite(T) && ts >= 5 * T && ts <= 0.9 * S->duration;
+    /* the detector returns the start of the run's last fifth when the envelope still grows there */
+    F->scored[GAL_ACC_M_STEADY] &= !S->turbulent && isfinite(T) && ts >= 5 * T && ts < 0.75 * S->duration;
+    if (!S->turbulent && !F->scored[GAL_ACC_M_STEADY]) {
+        size_t n = strlen(F->note);
+        snprintf(F->note + n, sizeof F->note - n, "%stime to steady galloping not scored: %s", n ? "; " : "",
+                 ts >= 0.75 * S->duration ? "the envelope still grows at the end of the run (lengthen "
+                                            "simulation.duration)" : "no growth to a steady orbit in this run");
+    }
 }
 
 /* the change of each scored measure over the last refinement, and whether all are below tol/10

@@ -307,6 +307,9 @@ static void effects_text(acc_study *S)
             snprintf(line, sizeof line, "%s: keep on (off: %s off the reference by %.3g%% > %.3g%%; "
                      "%s changed by %.3g%% from the base); ", name, gal_acc_measure_names[worst], 100 * p->error,
                      100 * E, gal_acc_measure_names[wb], 100 * db);
+        else if (save < 0)
+            snprintf(line, sizeof line, "%s: keep on (off stays within %.3g%% but took %.0f%% more time here); ",
+                     name, 100 * E, -100 * save);
         else if (save < MIN_SAVING)
             snprintf(line, sizeof line, "%s: keep on (off stays within %.3g%% but saves only %.0f%% of the time, "
                      "under %.0f%%); ", name, 100 * E, 100 * save, 100 * MIN_SAVING);
