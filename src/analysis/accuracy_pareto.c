@@ -293,30 +293,28 @@ static void effects_text(acc_study *S)
         if (p->c.effect_off < 0) continue;
         const char *name = gal_effect_names[p->c.effect_off];
         double save = 1 - p->wall_time_s / t0;
-        int worst = 0, wb = 0;
+        int wb = 0;
         double db = 0;
         for (int k = 0; k < GAL_ACC_NMEAS; k++) {
             if (!F->scored[k]) continue;
-            if (!F->scored[worst] || p->err[k] > p->err[worst]) worst = k;
             double d = gal_acc_relerr(p->value[k], b[k]);
             if (d > db || !F->scored[wb]) db = d, wb = k;
         }
-        char line[256];
+        /* the effect's own share: every measure against the same configuration with it on (the
+         * base); the error against the reference is stated beside it */
+        char line[320];
         if (p->failed[0]) snprintf(line, sizeof line, "%s: keep on (the run without it failed); ", name);
-        else if (p->error > E)
-            snprintf(line, sizeof line, "%s: keep on (off: %s off the reference by %.3g%% > %.3g%%; "
-                     "%s changed by %.3g%% from the base); ", name, gal_acc_measure_names[worst], 100 * p->error,
-                     100 * E, gal_acc_measure_names[wb], 100 * db);
-        else if (save < 0)
-            snprintf(line, sizeof line, "%s: keep on (off stays within %.3g%% but took %.0f%% more time here); ",
-                     name, 100 * E, -100 * save);
+        else if (db > E)
+            snprintf(line, sizeof line, "%s: keep on (off changes the %s by %.3g%% > %.3g%%); ", name,
+                     gal_acc_measure_names[wb], 100 * db, 100 * E);
         else if (save < MIN_SAVING)
-            snprintf(line, sizeof line, "%s: keep on (off stays within %.3g%% but saves only %.0f%% of the time, "
-                     "under %.0f%%); ", name, 100 * E, 100 * save, 100 * MIN_SAVING);
+            snprintf(line, sizeof line, "%s: keep on (off changes no measure by more than %.3g%% but %s %.0f%% of the "
+                     "time, under %.0f%%); ", name, 100 * db, save < 0 ? "took more time here, by" : "saves only",
+                     100 * fabs(save), 100 * MIN_SAVING);
         else
-            snprintf(line, sizeof line, "%s: may be switched off (every measure within %.3g%%, worst %s %.3g%%; "
-                     "saves %.0f%% of the time); ", name, 100 * E, gal_acc_measure_names[worst], 100 * p->error,
-                     100 * save);
+            snprintf(line, sizeof line, "%s: may be switched off (every measure within %.3g%% of the run with it on, "
+                     "worst %s %.3g%%; %.3g%% off the reference; saves %.0f%% of the time); ", name, 100 * E,
+                     gal_acc_measure_names[wb], 100 * db, 100 * p->error, 100 * save);
         if (len + strlen(line) < sizeof F->effects) {
             strcpy(F->effects + len, line);
             len += strlen(line);

@@ -135,7 +135,7 @@ typedef struct gal_acc_front {
     int chosen;                           /* index, -1 none */
     gal_acc_point check;                  /* the check run of the chosen configuration */
     int checked;
-    char effects[1024];                   /* the effects that may be switched off, and why not others */
+    char effects[2048];                   /* the effects that may be switched off, and why not others */
     char note[512];                       /* turbulent wind, budget exhausted... */
 } gal_acc_front;
 
