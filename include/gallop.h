@@ -26,6 +26,8 @@
 #include "gallop/statics/statics.h"
 /* modes: natural modes about the equilibrium */
 #include "gallop/modes/modes.h"
+/* bundle: the explicit bundle model (one rod per sub-conductor, rigid spacers) */
+#include "gallop/bundle/bundle.h"
 /* loads: aerodynamic tables and section loads, wind */
 #include "gallop/loads/aero.h"
 #include "gallop/loads/loads.h"

@@ -112,7 +112,6 @@ static void test_refusals(void)
     static const char *const bad[][2] = {
         {"bundle.subconductors=5", "subconductors"},
         {"bundle.subconductors=0", "subconductors"},
-        {"bundle.model=explicit", "model"},
         {"effects.torsion=off", "torsion"},
         {"bundle.separation=0", "separation"},
         {"bundle.subconductors=1", "separation"}, /* a bundle's key with one sub-conductor */

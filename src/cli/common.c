@@ -119,6 +119,17 @@ int gal_cli_scene(const gal_cli_command *c, const gal_cli_args *a, gal_scene *sc
         fprintf(stderr, "gallop %s: %s\n", c->name, gal_error_message());
         return gal_exit_code(st);
     }
+    /* the explicit bundle model has statics and modes only (README "Bundles") */
+    if (sc->bundle.subconductors > 1 && sc->bundle.explicit_model && strcmp(c->name, "modes") &&
+        strcmp(c->name, "check") && strcmp(c->name, "wind")) {
+        int ln = sc->bundle.model_line;
+        char at[64] = "--set";
+        if (ln > 0) snprintf(at, sizeof at, "%d", ln);
+        fprintf(stderr, "gallop %s: %s%s%s: [bundle] model = explicit: `gallop %s` does not run the explicit "
+                "bundle model (it has statics and modes: `gallop modes`); allowed: model = equivalent, which "
+                "runs every command\n", c->name, ln >= 0 ? a->operand : "", ln >= 0 ? ":" : "", at, c->name);
+        return 2;
+    }
     if (dir) {
         if (!*dir || strlen(dir) >= sizeof sc->output.directory)
             return usage_error(c, "-o: directory name empty or too long:", dir);

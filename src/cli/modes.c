@@ -15,6 +15,7 @@ int gal_cli_modes(int argc, char **argv)
     const char *outdir = NULL;
     int rc = gal_cli_load_scene(argc, argv, &sc, &outdir);
     if (rc) return rc;
+    if (sc.bundle.subconductors > 1 && sc.bundle.explicit_model) return gal_cli_modes_bundle(&sc, outdir);
     double t0 = gal_wall_time();
     int st;
     gal_model *m = gal_model_alloc(&sc, &st);

@@ -61,7 +61,8 @@ static int rod_params(const gal_scene *sc, gal_model_rod *r)
     }
     int st = gal_stringing_spec(sc, p->gravity, &r->spec, &r->spec_value); /* tension, sag or length */
     if (st != GAL_OK) return st;
-    if (sc->bundle.subconductors > 1) bundle_equivalent(sc, r);
+    /* explicit: the rod is one sub-conductor's (src/bundle/ builds the bundle from it) */
+    if (sc->bundle.subconductors > 1 && !sc->bundle.explicit_model) bundle_equivalent(sc, r);
     p->unstretched_length = r->spec == GAL_BY_LENGTH ? r->spec_value : 0.0;
     return GAL_OK;
 }

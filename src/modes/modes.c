@@ -11,7 +11,8 @@
 
 #include "base/chol.h"
 
-const char *const gal_family_names[GAL_FAMILY_COUNT] = {"vertical", "horizontal", "torsional", "axial"};
+const char *const gal_family_names[GAL_FAMILY_COUNT] = {"vertical", "horizontal", "torsional", "axial",
+                                                          "subspan"};
 const char *const gal_symmetry_names[3] = {"symmetric", "antisymmetric", "none"};
 
 void gal_modes_clear(gal_modes *m)

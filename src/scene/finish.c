@@ -257,9 +257,7 @@ static int bundle_checks(pstate *ps)
     if (!ps->given[K_BSEP])
         return scn_kfail(ps, K_BSUB, "a bundle of %d needs [bundle] separation (m, between adjacent "
                      "sub-conductors; allowed: 0 < separation <= 2)", n);
-    if (sc->bundle.explicit_model)
-        return scn_kfail(ps, K_BMODEL, "the explicit bundle model (one rod per sub-conductor) is not "
-                     "built yet; allowed: equivalent");
+    sc->bundle.model_line = ps->given[K_BMODEL]; /* for the commands that refuse explicit */
     if (!sc->effect[GAL_FX_TORSION])
         return scn_kfail(ps, K_BSUB, "a bundle with [effects] torsion = off: its twist is what the "
                      "bundle changes; allowed: torsion = on, or subconductors = 1");

@@ -17,6 +17,8 @@ typedef enum {
     GAL_FAMILY_HORIZONTAL, /* out of the plane of the sagged span */
     GAL_FAMILY_TORSIONAL,
     GAL_FAMILY_AXIAL,      /* along the conductor */
+    GAL_FAMILY_SUBSPAN,    /* an explicit bundle's sub-conductors moving relative to each other
+                            * between spacers (src/bundle/classify.c; never a single rod's) */
     GAL_FAMILY_COUNT
 } gal_family;
 

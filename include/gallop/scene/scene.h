@@ -134,6 +134,7 @@ typedef struct gal_scene {
         double spacer_mass;       /* kg, of one spacer */
         double spacer_inertia;    /* kg m^2, of one spacer about the bundle axis */
         int explicit_model;       /* 1: one rod per sub-conductor; 0: one equivalent rod */
+        int model_line;           /* the scene line of [bundle] model (-1: --set, 0: not given) */
     } bundle;
 
     int effect[GAL_FX_COUNT];     /* 1 on, 0 off */

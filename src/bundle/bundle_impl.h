@@ -1,0 +1,26 @@
+/* bundle_impl.h: what the files of src/bundle/ share: the spacers' place in the state vector and
+ * the assembly's helpers. */
+#ifndef GALLOP_BUNDLE_IMPL_H
+#define GALLOP_BUNDLE_IMPL_H
+
+#include "gallop/bundle/bundle.h"
+
+/* spacer sp's centre u (3), rotation R (9, row-major) and the sub-conductors' accumulated twist
+ * at its node (n), after the rods' configurations in the state s */
+#define SP_BASE(b, s, sp) ((s) + (size_t)(b)->n * (b)->rod[0]->nq + (size_t)(sp) * (12 + (b)->n))
+#define SP_U(b, s, sp) (SP_BASE(b, s, sp))
+#define SP_R(b, s, sp) (SP_BASE(b, s, sp) + 3)
+#define SP_PSI(b, s, sp) (SP_BASE(b, s, sp) + 12)
+
+void gal_bundle_expmap(const double w[3], double R[9]);
+void gal_bundle_tangent(const gal_bundle *b, const double *q, int i, double t[3]);
+void gal_bundle_map_values(gal_bundle *b, const double *s);
+int gal_bundle_pattern(gal_bundle *b);
+/* spacer sp's rotation basis E[0..nrot-1] at state s; returns nrot */
+int gal_bundle_basis(const gal_bundle *b, const double *s, int sp, double E[3][3]);
+
+/* a mode's family and symmetry (classify.c), with a scratch of gal_bundle_classify_scratch doubles */
+size_t gal_bundle_classify_scratch(const gal_bundle *b);
+void gal_bundle_classify(const gal_bundle *b, const double *z, double *scratch, gal_mode *md);
+
+#endif
