@@ -34,10 +34,11 @@ static int sturm_newton(int m, const double *a, const double *b, double x, doubl
     return cnt;
 }
 
-/* The nt lowest eigenvalues lam (omega^2) of the twist block of (K0, M): the free edge twists in
- * edge order couple only to their neighbours (a tridiagonal pencil with a diagonal mass), scaled
- * by the mass, by bisection on Sturm counts. Returns how many it gave (0: no torsion). */
-static int twist_estimates(const gal_rod *rod, const gal_csc *K0, int nt, double *lam)
+/* The lowest eigenvalues lam (omega^2) of the twist block of (K0, M), at most nt, and past the
+ * first `need` only while below `stop`: the free edge twists in edge order couple only to their
+ * neighbours (a tridiagonal pencil with a diagonal mass), scaled by the mass. Returns how many it
+ * gave (0: no torsion). */
+static int twist_estimates(const gal_rod *rod, const gal_csc *K0, int nt, int need, double stop, double *lam)
 {
     int nel = rod->p.elements, m = 0;
     if (!rod->p.torsion || nt < 1) return 0;
@@ -74,6 +75,7 @@ static int twist_estimates(const gal_rod *rod, const gal_csc *K0, int nt, double
             if (done) break;
         }
         lam[k] = x;
+        if (k + 1 >= need && x >= stop) nt = k + 1;
     }
     free(a); free(b); free(dof);
     return nt;
@@ -224,25 +226,37 @@ static int bottom_count(const gal_modes *out, double lam_t, int wt)
     return nev;
 }
 
+/* omega^2 of the lowest string mode, (pi/L0)^2 T/m, T from the first element's stretch. */
+static double string_lambda1(const gal_rod *rod, const double *q)
+{
+    double d[3] = {q[3] - q[0], q[4] - q[1], q[5] - q[2]}, L0 = rod->p.unstretched_length;
+    double T = rod->p.EA * (sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / (L0 / rod->p.elements) - 1);
+    return T > 0 && L0 > 0 && rod->p.mass > 0 ? GAL_PI * GAL_PI / (L0 * L0) * T / rod->p.mass : 0;
+}
+
 static int find(gal_modes_ctx *c, const int want[GAL_FAMILY_COUNT], int max_modes, gal_modes *out, gal_modes *acc)
 {
-    int wt = want[GAL_FAMILY_TORSIONAL], st, done = 0;
-    double *est = malloc((size_t)(wt + 1) * sizeof(double));
-    if (!est) return gal_error(GAL_ENOMEM, "modes: out of memory");
-    int nest = wt > 0 ? twist_estimates(c->rod, &c->K0, wt + 1, est) : 0;
-    /* the twist block holds the torsional modes where the twist is not coupled to the motion
-     * through the mass: not with eccentric ice (there they came out 1.3 times higher) */
-    int windows = nest == wt + 1 && !c->rod->ecc_c;
     /* the vertical and horizontal modes come in near pairs from the bottom (exact pairs on a
      * straight span, which split_clusters can only split whole: an even count), so the lowest
-     * 2 max(v, h) modes usually hold both families (one pair more when v = h) */
+     * 2 max(v, h) modes usually hold both families (one pair more when v = h), with the torsional
+     * modes estimated below the last of them, (max(v, h) + 1)^2 times the string's lowest (a
+     * bundle's twist is that low) */
     int v = want[GAL_FAMILY_VERTICAL], h = want[GAL_FAMILY_HORIZONTAL], pairs = v > h ? v : h;
     if (pairs < (v + h + 2) / 2) pairs = (v + h + 2) / 2;
-    st = from_bottom(c, 2 * pairs, max_modes, want, 3, out, acc);
+    int wt = want[GAL_FAMILY_TORSIONAL], ne = (wt > 2 * pairs ? wt : 2 * pairs) + 1, st, done = 0;
+    double *est = malloc((size_t)ne * sizeof(double));
+    if (!est) return gal_error(GAL_ENOMEM, "modes: out of memory");
+    double bound = (pairs + 1) * (pairs + 1) * string_lambda1(c->rod, c->q);
+    int nest = wt > 0 || bound > 0 ? twist_estimates(c->rod, &c->K0, ne, wt > 0 ? wt + 1 : 1, bound, est) : 0, low = 0;
+    while (low < nest && est[low] < bound) low++;
+    /* the twist block holds the torsional modes where the twist is not coupled to the motion
+     * through the mass: not with eccentric ice (there they came out 1.3 times higher) */
+    int windows = nest >= wt + 1 && !c->rod->ecc_c;
+    st = from_bottom(c, 2 * pairs + low, max_modes, want, 3, out, acc);
     if (!st && wt > 0 && out->found[GAL_FAMILY_TORSIONAL] < wt && out->n < max_modes) {
         if (windows) st = torsional_windows(c, est, wt, out, acc, &done);
         if (!st && !done) { /* from the bottom, every family */
-            int nev = bottom_count(out, nest == wt + 1 ? est[wt - 1] : 0, wt);
+            int nev = bottom_count(out, nest >= wt ? est[wt - 1] : 0, wt);
             gal_modes_clear(out);
             st = from_bottom(c, nev, max_modes, want, 7, out, acc);
         }
