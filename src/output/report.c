@@ -219,7 +219,7 @@ void gal_report_modes_table(FILE *fp, const gal_scene *sc, const gal_equilibrium
     for (int k = 0; k < md->n; k++) {
         const gal_mode *m = md->mode + k;
         if (!m->selected) continue;
-        fprintf(fp, "%5d  %-10s  %-13s  %12.6f  %10.4f  %6.3f %6.3f %6.3f %6.3f\n", k + 1,
+        fprintf(fp, "%5d  %-10s  %-13s  %12.6f  %10.4f  %6.3f %6.3f %6.3f %6.3f\n", m->index,
                 gal_family_names[m->family], gal_symmetry_names[m->symmetry], m->frequency_hz,
                 1.0 / m->frequency_hz, m->share[0], m->share[1], m->share[2], m->share[3]);
     }
