@@ -194,8 +194,68 @@ static void test_convergence_order(void)
     CHECK(p1 > 1.7 && p2 > 1.5, "order %g %g", p1, p2);
 }
 
+/* The modes a search by family selects (torsional ones by a shift at each estimate, computing a
+ * window of a few modes) against every mode from the bottom: the same frequency, family and shape
+ * (M-inner product 1 up to sign) at the rank the inertia of K - sigma M gave (gal_mode.index). On a
+ * 300 m Drake span (torsional modes far above the flexural ones: the shifts are used), with
+ * eccentric ice (twist coupled to the motion through M and K: from the bottom) and with a soft
+ * twist (torsional modes among the flexural ones, as on a bundle: foreseen, one run). */
+static void check_against_bottom(const gal_rod_params *p, const int want[4], int expect)
+{
+    gal_equilibrium eq;
+    gal_modes md, all;
+    CHECK(gal_statics_solve(p, GAL_BY_TENSION, 28000, NULL, &eq) == GAL_OK, "statics: %s", gal_error_message());
+    CHECK(gal_modes_find(eq.rod, eq.q, want, 400, &md) == GAL_OK, "find: %s", gal_error_message());
+    int top = 0, nsel = 0;
+    for (int k = 0; k < md.n; k++) {
+        if (md.mode[k].index > top) top = md.mode[k].index;
+        CHECK(k == 0 || md.mode[k].index > md.mode[k - 1].index, "ranks in order at %d", k);
+    }
+    CHECK(gal_modes_solve(eq.rod, eq.q, top + 2, &all) == GAL_OK, "all: %s", gal_error_message());
+    if (expect == 1) /* by shifts: fewer modes than their ranks */
+        CHECK(md.n < top && md.factorizations > 1, "computed %d of %d modes in %ld factorizations", md.n, top,
+              md.factorizations);
+    if (expect == 2) /* the torsional modes among the lowest, foreseen: one run */
+        CHECK(md.factorizations == 1, "%ld factorizations", md.factorizations);
+    int n = md.ndof;
+    double *mphi = malloc((size_t)n * sizeof(double));
+    for (int k = 0; k < md.n; k++) {
+        if (!md.mode[k].selected) continue;
+        nsel++;
+        const gal_mode *a = md.mode + k, *b = all.mode + a->index - 1;
+        CHECK_REL(a->frequency_hz, b->frequency_hz, 1e-9);
+        CHECK(a->family == b->family, "mode %d: family %d vs %d", a->index, a->family, b->family);
+        gal_rod_mass_mult(eq.rod, all.shape + (size_t)(a->index - 1) * n, mphi);
+        double ip = 0;
+        for (int j = 0; j < n; j++) ip += md.shape[(size_t)k * n + j] * mphi[j];
+        CHECK(fabs(fabs(ip) - 1) < 1e-6, "mode %d: <phi, M phi_ref> = %.9f", a->index, ip);
+    }
+    CHECK(nsel == want[0] + want[1] + want[2], "selected %d", nsel);
+    printf("    (%d modes computed for ranks up to %d, %ld factorizations, %ld operator applications)\n", md.n, top,
+           md.factorizations, md.op_applications);
+    free(mphi);
+    gal_modes_clear(&md);
+    gal_modes_clear(&all);
+    gal_equilibrium_clear(&eq);
+}
+
+static void test_family_shifts(void)
+{
+    gal_rod_params p = {.length = 300, .elements = 200, .EA = 2.9e7, .EI = 28, .GJ = 160, .mass = 1.628,
+                        .polar_inertia = 1.6e-4, .gravity = G, .torsion = 1, .twist_clamped = 1};
+    int want[4] = {3, 2, 2, 0};
+    check_against_bottom(&p, want, 1);
+    int want3[4] = {1, 0, 3, 0};
+    check_against_bottom(&p, want3, 1);
+    p.ecc_mass = 0.6, p.ecc = 0.02, p.ecc_angle = GAL_PI / 2, p.mass += 0.6; /* ice at the side */
+    check_against_bottom(&p, want, 0);
+    p.GJ = 2, p.ecc_mass = 0, p.mass -= 0.6; /* soft twist: the torsional modes among the lowest */
+    check_against_bottom(&p, want, 2);
+}
+
 int main(void)
 {
+    RUN(test_family_shifts);
     RUN(test_out_of_plane_and_antisymmetric);
     RUN(test_symmetric_below_crossover);
     RUN(test_symmetric_at_crossover);

@@ -23,47 +23,45 @@ gal_chol *gal_chol_free(gal_chol *f)
     return NULL;
 }
 
-/* The permuted pattern A = triu(K(perm, perm)) with sorted columns, and map: K's entry k -> A's. */
+/* The permuted pattern A = triu(K(perm, perm)) with sorted columns, and map: K's entry k -> A's,
+ * in O(nnz): the entries bucketed by their row in A (a counting sort), then placed into their
+ * columns row by row, so that every column comes out sorted and each entry's place is known. */
 static int permuted_pattern(gal_chol *f, const gal_csc *K)
 {
-    int n = K->n, *pinv = malloc((size_t)n * sizeof(int)), *cnt = calloc((size_t)n + 1, sizeof(int));
-    f->A = cholmod_allocate_sparse(n, n, K->nnz, 1, 1, 1, CHOLMOD_REAL, &f->c);
-    f->map = malloc((size_t)K->nnz * sizeof(int));
-    if (!pinv || !cnt || !f->A || !f->map) { free(pinv); free(cnt); return GAL_ENOMEM; }
+    int n = K->n, nnz = K->nnz, st = GAL_ENOMEM;
+    int *pinv = malloc((size_t)n * sizeof(int)), *next = calloc((size_t)n + 1, sizeof(int));
+    int *byrow = malloc((size_t)nnz * sizeof(int)), *colof = malloc((size_t)nnz * sizeof(int));
+    f->A = cholmod_allocate_sparse(n, n, nnz, 1, 1, 1, CHOLMOD_REAL, &f->c);
+    f->map = malloc((size_t)nnz * sizeof(int));
+    if (!pinv || !next || !byrow || !colof || !f->A || !f->map) goto done;
     int *Ap = f->A->p, *Ai = f->A->i;
     for (int k = 0; k < n; k++) pinv[f->perm[k]] = k;
+    memset(Ap, 0, (size_t)(n + 1) * sizeof(int));
     for (int j = 0; j < n; j++)
         for (int p = K->colptr[j]; p < K->colptr[j + 1]; p++) {
             int a = pinv[K->rowind[p]], b = pinv[j];
-            cnt[(a > b ? a : b) + 1]++;
+            colof[p] = a > b ? a : b;
+            next[(a > b ? b : a) + 1]++;
+            Ap[colof[p] + 1]++;
         }
-    for (int j = 0; j < n; j++) cnt[j + 1] += cnt[j];
-    memcpy(Ap, cnt, (size_t)(n + 1) * sizeof(int));
-    for (int j = 0; j < n; j++)
+    for (int j = 0; j < n; j++) next[j + 1] += next[j], Ap[j + 1] += Ap[j];
+    for (int j = 0; j < n; j++) /* bucket by row: next[r] runs from row r's start to its end */
         for (int p = K->colptr[j]; p < K->colptr[j + 1]; p++) {
-            int a = pinv[K->rowind[p]], b = pinv[j], col = a > b ? a : b, row = a > b ? b : a;
-            int s = cnt[col]++;
-            /* insertion into the column kept sorted by row (columns hold a dozen entries) */
-            while (s > Ap[col] && Ai[s - 1] > row) {
-                Ai[s] = Ai[s - 1];
-                s--;
-            }
-            Ai[s] = row;
+            int a = pinv[K->rowind[p]], b = pinv[j];
+            byrow[next[a > b ? b : a]++] = p;
         }
-    /* map by search in the sorted columns */
-    for (int j = 0; j < n; j++)
-        for (int p = K->colptr[j]; p < K->colptr[j + 1]; p++) {
-            int a = pinv[K->rowind[p]], b = pinv[j], col = a > b ? a : b, row = a > b ? b : a;
-            int lo = Ap[col], hi = Ap[col + 1] - 1;
-            while (lo < hi) {
-                int m = (lo + hi) / 2;
-                if (Ai[m] < row) lo = m + 1; else hi = m;
-            }
-            f->map[p] = lo;
+    memcpy(pinv, Ap, (size_t)n * sizeof(int)); /* pinv is done with: now each column's fill point */
+    int q = 0;
+    for (int r = 0; r < n; r++)
+        for (; q < next[r]; q++) {
+            int p = byrow[q], s = pinv[colof[p]]++;
+            Ai[s] = r;
+            f->map[p] = s;
         }
-    free(pinv);
-    free(cnt);
-    return GAL_OK;
+    st = GAL_OK;
+done:
+    free(pinv); free(next); free(byrow); free(colof);
+    return st;
 }
 
 gal_chol *gal_chol_alloc(const gal_csc *K)
@@ -83,12 +81,14 @@ gal_chol *gal_chol_alloc(const gal_csc *K)
     }
     memcpy(f->A->p, K->colptr, (size_t)(K->n + 1) * sizeof(int));
     memcpy(f->A->i, K->rowind, (size_t)K->nnz * sizeof(int));
-    /* the fill-reducing ordering (CHOLMOD's choice, postordered), then the same analysis of the
-     * permuted matrix in its natural order */
+    /* the fill-reducing ordering (CHOLMOD's choice, postordered); the matrix is then handed over
+     * permuted, so the analysis is that of the permuted matrix in its natural order: a simplicial
+     * factor's column counts are the same, only its Perm becomes the identity (what a second
+     * analysis in the natural order gives, at 0.2 ms of 1 at 1000 elements); a supernodal one is
+     * analysed again */
     f->L = cholmod_analyze(f->A, &f->c);
     if (f->L && f->c.status >= 0) {
         memcpy(f->perm, f->L->Perm, (size_t)K->n * sizeof(int));
-        cholmod_free_factor(&f->L, &f->c);
         cholmod_free_sparse(&f->A, &f->c);
         if (permuted_pattern(f, K) != GAL_OK) {
             gal_error(GAL_ENOMEM, "CHOLMOD: out of memory for a %d x %d matrix", K->n, K->n);
@@ -97,7 +97,14 @@ gal_chol *gal_chol_alloc(const gal_csc *K)
         f->c.nmethods = 1;
         f->c.method[0].ordering = CHOLMOD_NATURAL;
         f->c.postorder = 0;
-        f->L = cholmod_analyze(f->A, &f->c);
+        if (!f->L->is_super) {
+            int *P = f->L->Perm;
+            for (int k = 0; k < K->n; k++) P[k] = k;
+            f->L->ordering = CHOLMOD_NATURAL;
+        } else {
+            cholmod_free_factor(&f->L, &f->c);
+            f->L = cholmod_analyze(f->A, &f->c);
+        }
     }
     if (f->c.status == CHOLMOD_OUT_OF_MEMORY) {
         gal_error(GAL_ENOMEM, "CHOLMOD: out of memory in the symbolic analysis of a %d x %d matrix "

@@ -1,5 +1,6 @@
 /* modes.c: modes of the linearized rod, K phi = w^2 M phi (paper Eq. 9 without damping and load),
- * by ARPACK shift-invert (mode 3) with CHOLMOD; classification by kinetic-energy shares. */
+ * by ARPACK shift-invert (mode 3) with CHOLMOD, at a shift below the spectrum or inside it;
+ * classification by kinetic-energy shares. The search by family is in modes_find.c. */
 #include "gallop/modes/modes.h"
 #include "gallop/base/core.h"
 #include "gallop/base/vec3.h"
@@ -10,6 +11,7 @@
 #include <string.h>
 
 #include "base/chol.h"
+#include "modes_impl.h"
 
 const char *const gal_family_names[GAL_FAMILY_COUNT] = {"vertical", "horizontal", "torsional", "axial",
                                                           "subspan"};
@@ -121,85 +123,134 @@ static void split_clusters(const gal_rod *rod, gal_modes *out, const double *mdi
     }
 }
 
-/* The workspace of one ARPACK run: the stage's own K - sigma M and its factorization. */
-typedef struct {
-    int n, nev, ncv, lworkl;
-    double *mdiag, *tmp, *resid, *v, *workd, *workl, *d, *z, *full;
+/* The arrays of one ARPACK run (kept by the context for the next when large enough). */
+typedef struct modes_ws {
+    int n, nev, ncv, lworkl, cap_nev, cap_ncv;
+    double *tmp, *resid, *v, *workd, *workl, *d, *z;
     int *select;
-    gal_csc *K;
-    gal_chol *chol;
 } modes_ws;
 
 static void ws_free(modes_ws *w)
 {
-    gal_chol_free(w->chol);
-    gal_csc_free(w->K);
-    free(w->mdiag); free(w->tmp); free(w->resid); free(w->v); free(w->workd); free(w->workl); free(w->d);
-    free(w->z); free(w->full); free(w->select);
+    if (!w) return;
+    free(w->tmp); free(w->resid); free(w->v); free(w->workd); free(w->workl); free(w->d); free(w->z);
+    free(w->select);
+    free(w);
 }
 
-static int ws_alloc(modes_ws *w, const gal_rod *rod, int nev)
+/* ARPACK's advice is ncv >= 2 nev; a larger basis buys fewer restarts at a cost that grows as
+ * n ncv^2 per restart (the reorthogonalization). Measured at 1000 elements (issue 16; CPU ms,
+ * operator applications): one mode at an inner shift 4 applications at ncv = 3, 10 at 9; 9 modes
+ * from the bottom 32 at 2 nev + 1, 35 at nev + 8; 39 modes 20.7 ms at 2 nev + 1 (the old rule
+ * gave 79: 100 applications), 18.7 at nev + 12, 17.1 at 1.5 nev + 4; 64 modes 44.3, 43.2, 36.8. */
+int gal_modes_ncv(int nev, int n)
 {
-    int n = rod->ndof;
-    memset(w, 0, sizeof *w);
-    w->n = n, w->nev = nev;
-    w->ncv = 2 * nev + 1 > nev + 20 ? 2 * nev + 1 : nev + 20;
-    if (w->ncv > n) w->ncv = n;
-    int ncv = w->ncv;
-    w->lworkl = ncv * (ncv + 8);
-    w->mdiag = malloc((size_t)n * sizeof(double)), w->tmp = malloc((size_t)n * sizeof(double));
-    w->resid = malloc((size_t)n * sizeof(double)), w->v = malloc((size_t)n * ncv * sizeof(double));
-    w->workd = malloc((size_t)3 * n * sizeof(double)), w->workl = malloc((size_t)w->lworkl * sizeof(double));
-    w->d = malloc((size_t)nev * sizeof(double)), w->z = malloc((size_t)n * nev * sizeof(double));
-    w->full = malloc((size_t)rod->nq * sizeof(double));
-    w->select = calloc((size_t)ncv, sizeof(int));
-    w->K = gal_csc_clone(rod->K);
-    w->chol = w->K ? gal_chol_alloc(w->K) : NULL;
-    if (!w->mdiag || !w->tmp || !w->resid || !w->v || !w->workd || !w->workl || !w->d || !w->z || !w->full ||
-        !w->select || !w->K || !w->chol) {
-        ws_free(w);
-        return gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
+    int ncv = 2 * nev + 1 < 3 * nev / 2 + 4 ? 2 * nev + 1 : 3 * nev / 2 + 4;
+    return ncv > n ? n : ncv;
+}
+
+/* The context's workspace for nev modes (reallocated only when it is too small). */
+static modes_ws *ws_get(gal_modes_ctx *c, int n, int nev)
+{
+    int ncv = gal_modes_ncv(nev, n);
+    modes_ws *w = c->ws;
+    if (w && w->cap_nev >= nev && w->cap_ncv >= ncv) {
+        w->nev = nev, w->ncv = ncv, w->lworkl = ncv * (ncv + 8);
+        return w;
     }
-    return GAL_OK;
+    ws_free(w);
+    c->ws = w = calloc(1, sizeof *w);
+    if (!w) {
+        gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
+        return NULL;
+    }
+    w->n = n, w->nev = w->cap_nev = nev, w->ncv = w->cap_ncv = ncv;
+    w->lworkl = ncv * (ncv + 8);
+    w->tmp = malloc((size_t)n * sizeof(double)), w->resid = malloc((size_t)n * sizeof(double));
+    w->v = malloc((size_t)n * ncv * sizeof(double)), w->workd = malloc((size_t)3 * n * sizeof(double));
+    w->workl = malloc((size_t)w->lworkl * sizeof(double)), w->d = malloc((size_t)nev * sizeof(double));
+    w->z = malloc((size_t)n * nev * sizeof(double)), w->select = calloc((size_t)ncv, sizeof(int));
+    if (!w->tmp || !w->resid || !w->v || !w->workd || !w->workl || !w->d || !w->z || !w->select) {
+        ws_free(w);
+        c->ws = NULL;
+        gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
+        return NULL;
+    }
+    return w;
 }
 
-/* The tangent at q, the shift sigma below the lowest frequency, and the factorization of
- * K - sigma M. */
-static int shift_factor(const gal_rod *rod, const double *q, modes_ws *w, gal_modes *out)
+void gal_modes_ctx_clear(gal_modes_ctx *c)
 {
-    gal_csc *K = w->K;
-    int n = w->n, st;
-    if ((st = gal_rod_eval(rod, q, NULL, NULL, K))) return st;
-    gal_rod_mass_diag(rod, w->mdiag);
-    /* shift below the lowest frequency: a fraction of the lowest string frequency
-     * (pi/L)^2 T/m, from the smallest ratio of stiffness to mass on the diagonal scaled */
-    double kmin = INFINITY;
-    for (int j = 0; j < n; j++) kmin = fmin(kmin, K->val[K->diag[j]] / w->mdiag[j]);
-    double sigma = -0.1 * kmin * pow(GAL_PI / rod->p.elements, 2);
-    if (!(sigma < 0)) sigma = -1e-3;
+    gal_chol_free(c->chol);
+    ws_free(c->ws);
+    free(c->K0.val);
+    free(c->K.val);
+    free(c->full);
+    free(c->start);
+    memset(c, 0, sizeof *c);
+}
+
+int gal_modes_ctx_init(gal_modes_ctx *c, const gal_rod *rod, const double *q)
+{
+    memset(c, 0, sizeof *c);
+    c->rod = rod, c->q = q;
+    int n = rod->ndof;
+    c->K0 = *rod->K, c->K = *rod->K; /* views of the pattern: only the values are the context's */
+    c->K0.val = malloc((size_t)rod->K->nnz * sizeof(double)), c->K.val = malloc((size_t)rod->K->nnz * sizeof(double));
+    c->full = malloc((size_t)rod->nq * sizeof(double)), c->start = malloc((size_t)n * sizeof(double));
+    c->chol = c->K.val ? gal_chol_alloc(&c->K) : NULL;
+    if (!c->K0.val || !c->K.val || !c->full || !c->start || !c->chol) {
+        gal_modes_ctx_clear(c);
+        return gal_error(GAL_ENOMEM, "modes: out of memory for %d dofs", n);
+    }
+    for (int k = 0; k < n; k++) c->start[k] = 1.0 + 0.37 * sin(1.3 * k); /* deterministic */
+    int st = gal_rod_eval(rod, q, NULL, NULL, &c->K0);
+    if (st) gal_modes_ctx_clear(c);
+    return st;
+}
+
+/* The shift (below the lowest frequency when below: a fraction of the lowest string frequency
+ * (pi/L)^2 T/m, from the smallest ratio of stiffness to mass on the diagonal) and the
+ * factorization of K - sigma M on the common pattern (M is not diagonal with eccentric ice). */
+static int shift_factor(gal_modes_ctx *c, double sigma, int below, gal_modes *out)
+{
+    const gal_rod *rod = c->rod;
+    gal_csc *K = &c->K;
+    int n = rod->ndof;
+    if (below) {
+        double kmin = INFINITY;
+        for (int j = 0; j < n; j++) kmin = fmin(kmin, c->K0.val[c->K0.diag[j]] / rod->mdiag[j]);
+        sigma = -0.1 * kmin * pow(GAL_PI / rod->p.elements, 2);
+        if (!(sigma < 0)) sigma = -1e-3;
+    }
     out->sigma = sigma;
-    /* K - sigma M on the common pattern (M is not diagonal with eccentric ice) */
-    for (int k = 0; k < K->nnz; k++) K->val[k] -= sigma * rod->M->val[k];
-    if (gal_chol_factor(w->chol, K, 0, NULL) != GAL_OK)
+    for (int k = 0; k < K->nnz; k++) K->val[k] = c->K0.val[k] - sigma * rod->M->val[k];
+    int st = gal_chol_factor(c->chol, K, 0, NULL);
+    if (st == GAL_ENOMEM) return st;
+    if (st != GAL_OK && below)
         return gal_error(GAL_EFAIL, "modes: K - sigma M is not positive definite at sigma = %g: the "
                          "equilibrium has lost stability (%s)", sigma, gal_error_message());
-    if (w->chol->negative_pivots)
+    if (st != GAL_OK) return gal_error(GAL_EFAIL, "modes: K - sigma M at sigma = %g: %s", sigma, gal_error_message());
+    if (below && c->chol->negative_pivots)
         return gal_error(GAL_EFAIL, "modes: K - sigma M has %d negative eigenvalue%s at sigma = %g: the "
-                         "equilibrium has lost stability", w->chol->negative_pivots,
-                         w->chol->negative_pivots > 1 ? "s" : "", sigma);
+                         "equilibrium has lost stability", c->chol->negative_pivots,
+                         c->chol->negative_pivots > 1 ? "s" : "", sigma);
+    if (!below && c->chol->L->is_super)
+        return gal_error(GAL_EFAIL, "modes: no inertia from a supernodal factorization at sigma = %g", sigma);
     return GAL_OK;
 }
 
 /* ARPACK reverse communication, OP = (K - sigma M)^-1 M, B = M, then the eigenpairs (w->d, w->z). */
-static int arpack(const gal_rod *rod, modes_ws *w, gal_modes *out)
+static int arpack(gal_modes_ctx *c, modes_ws *w, gal_modes *out)
 {
+    const gal_rod *rod = c->rod;
     int n = w->n, nev = w->nev, ncv = w->ncv, st;
     int ido = 0, info = 0, iparam[11] = {0}, ipntr[14] = {0};
     iparam[0] = 1;     /* exact shifts */
     iparam[2] = 1000;  /* maximum restarts */
     iparam[6] = 3;     /* shift-invert mode */
     double tol = 1e-12, sigma = out->sigma;
-    for (int k = 0; k < n; k++) w->resid[k] = 1.0 + 0.37 * sin(1.3 * k); /* deterministic start */
+    memcpy(w->resid, c->start, (size_t)n * sizeof(double));
     info = 1;
     for (;;) {
         dsaupd_c(&ido, "G", n, "LM", nev, tol, w->resid, ncv, w->v, n, iparam, ipntr, w->workd, w->workl,
@@ -207,10 +258,10 @@ static int arpack(const gal_rod *rod, modes_ws *w, gal_modes *out)
         double *x = w->workd + ipntr[0] - 1, *y = w->workd + ipntr[1] - 1;
         if (ido == -1) {
             gal_rod_mass_mult(rod, x, w->tmp);
-            if ((st = gal_chol_solve(w->chol, w->tmp, y))) return st;
+            if ((st = gal_chol_solve(c->chol, w->tmp, y))) return st;
             out->op_applications++;
         } else if (ido == 1) {
-            if ((st = gal_chol_solve(w->chol, w->workd + ipntr[2] - 1, y))) return st;
+            if ((st = gal_chol_solve(c->chol, w->workd + ipntr[2] - 1, y))) return st;
             out->op_applications++;
         } else if (ido == 2) {
             gal_rod_mass_mult(rod, x, y);
@@ -230,18 +281,44 @@ static int arpack(const gal_rod *rod, modes_ws *w, gal_modes *out)
     return GAL_OK;
 }
 
-/* The modes by increasing frequency, mass-normalized, coincident pairs split, signs fixed,
- * classified. */
-static int extract(const gal_rod *rod, const double *q, modes_ws *w, gal_modes *out)
+/* Mode k's shape from ARPACK's column phi: mass-normalized (ARPACK's are M-orthonormal already;
+ * renormalized against round-off), sign fixed (largest entry positive); its frequency. */
+static int store_mode(gal_modes_ctx *c, const double *phi, double lam, double *tmp, gal_modes *out, int k)
 {
-    int n = w->n, nev = w->nev;
+    int n = out->ndof;
+    double *dst = out->shape + (size_t)k * n, mm = 0, big = 0;
+    gal_rod_mass_mult(c->rod, phi, tmp);
+    for (int j = 0; j < n; j++) {
+        mm += tmp[j] * phi[j];
+        if (fabs(phi[j]) > fabs(big)) big = phi[j];
+    }
+    double s = (big < 0 ? -1.0 : 1.0) / sqrt(mm);
+    for (int j = 0; j < n; j++) dst[j] = s * phi[j];
+    /* a negative eigenvalue is lost stability, never a 0 Hz mode; a round-off one (the neutral
+     * rotation of a span free to twist) is 0 */
+    if (lam < -1e-6 * fabs(out->sigma))
+        return gal_error(GAL_EFAIL, "modes: mode %d has omega^2 = %.3g < 0: the equilibrium has lost "
+                         "stability", k + 1, lam);
+    gal_mode *md = out->mode + k;
+    md->omega = lam > 0 ? sqrt(lam) : 0;
+    md->frequency_hz = md->omega / (2 * GAL_PI);
+    return GAL_OK;
+}
+
+/* The modes by increasing frequency, mass-normalized, coincident pairs split, signs fixed,
+ * classified, ranked (from below the spectrum: 1..nev; inside it: from the negative pivots). */
+static int extract(gal_modes_ctx *c, modes_ws *w, int below, gal_modes *out)
+{
+    const gal_rod *rod = c->rod;
+    int n = w->n, nev = w->nev, st = GAL_OK;
     out->n = nev;
     out->ndof = n;
     out->mode = calloc((size_t)nev, sizeof(gal_mode));
     out->shape = malloc((size_t)n * nev * sizeof(double));
     int *ord = malloc((size_t)nev * sizeof(int));
-    if (!out->mode || !out->shape || !ord) {
-        free(ord);
+    double *lam = malloc((size_t)nev * sizeof(double));
+    if (!out->mode || !out->shape || !ord || !lam) {
+        free(ord); free(lam);
         return gal_error(GAL_ENOMEM, "modes: out of memory");
     }
     /* sort by eigenvalue (dseupd returns them ascending, but do not rely on it) */
@@ -249,48 +326,57 @@ static int extract(const gal_rod *rod, const double *q, modes_ws *w, gal_modes *
     for (int k = 0; k < nev; k++) ord[k] = k;
     for (int a = 1; a < nev; a++)
         for (int b = a; b > 0 && d[ord[b]] < d[ord[b - 1]]; b--) { int t = ord[b]; ord[b] = ord[b - 1]; ord[b - 1] = t; }
-    for (int k = 0; k < nev; k++) {
-        const double *phi = w->z + (size_t)ord[k] * n;
-        double *dst = out->shape + (size_t)k * n;
-        /* mass-normalize (ARPACK's are M-orthonormal already; renormalize against round-off) and
-         * fix the sign: largest entry positive */
-        double mm = 0, big = 0;
-        gal_rod_mass_mult(rod, phi, w->tmp);
-        for (int j = 0; j < n; j++) {
-            mm += w->tmp[j] * phi[j];
-            if (fabs(phi[j]) > fabs(big)) big = phi[j];
-        }
-        double s = (big < 0 ? -1.0 : 1.0) / sqrt(mm);
-        for (int j = 0; j < n; j++) dst[j] = s * phi[j];
-        gal_mode *md = out->mode + k;
-        double lam = d[ord[k]];
-        /* a negative eigenvalue is lost stability, never a 0 Hz mode; a round-off one (the
-         * neutral rotation of a span free to twist) is 0 */
-        if (lam < -1e-6 * fabs(out->sigma)) {
-            free(ord);
-            return gal_error(GAL_EFAIL, "modes: mode %d has omega^2 = %.3g < 0: the equilibrium has lost "
-                             "stability", k + 1, lam);
-        }
-        md->omega = lam > 0 ? sqrt(lam) : 0;
-        md->frequency_hz = md->omega / (2 * GAL_PI);
+    int nlow = 0; /* modes of the window below the shift */
+    for (int k = 0; k < nev && !st; k++) {
+        st = store_mode(c, w->z + (size_t)ord[k] * n, d[ord[k]], w->tmp, out, k);
+        nlow += d[ord[k]] < out->sigma;
     }
     free(ord);
-    double *lam = malloc((size_t)nev * sizeof(double));
-    if (lam) {
-        for (int k = 0; k < nev; k++) lam[k] = out->mode[k].omega * out->mode[k].omega;
-        split_clusters(rod, out, w->mdiag, lam);
-        free(lam);
-    }
+    if (st) { free(lam); return st; }
+    for (int k = 0; k < nev; k++) lam[k] = out->mode[k].omega * out->mode[k].omega;
+    split_clusters(rod, out, rod->mdiag, lam);
+    free(lam);
+    int first = below ? 1 : c->chol->negative_pivots - nlow + 1;
     for (int k = 0; k < nev; k++) {
-        gal_mode *md = out->mode + k;
         /* sign: largest entry positive */
         double *dst = out->shape + (size_t)k * n, big = 0;
         for (int j = 0; j < n; j++) if (fabs(dst[j]) > fabs(big)) big = dst[j];
         if (big < 0) for (int j = 0; j < n; j++) dst[j] = -dst[j];
-        classify(rod, q, dst, w->full, md);
-        out->found[md->family]++;
+        out->mode[k].index = first + k;
+        if (below) gal_modes_classify(c, out, k);
     }
     return GAL_OK;
+}
+
+void gal_modes_classify(gal_modes_ctx *c, gal_modes *out, int k)
+{
+    classify(c->rod, c->q, out->shape + (size_t)k * out->ndof, c->full, out->mode + k);
+    out->found[out->mode[k].family]++;
+}
+
+int gal_modes_run(gal_modes_ctx *c, int nev, double sigma, int below, gal_modes *out)
+{
+    double t0 = gal_wall_time();
+    memset(out, 0, sizeof *out);
+    int n = c->rod->ndof;
+    if (nev < 1 || nev > n - 1)
+        return gal_error(GAL_EINPUT, "modes: %d modes asked of a system with %d degrees of freedom "
+                         "(allowed: 1 to %d)", nev, n, n - 1);
+    modes_ws *w = ws_get(c, n, nev);
+    if (!w) return GAL_ENOMEM;
+    long f0 = c->chol->factorizations, s0 = c->chol->solves;
+    int st = shift_factor(c, sigma, below, out);
+    if (!st) st = arpack(c, w, out);
+    if (!st) st = extract(c, w, below, out);
+    out->factorizations = c->chol->factorizations - f0;
+    out->solves = c->chol->solves - s0;
+    out->rounds = 1;
+    out->wall_time_s = gal_wall_time() - t0;
+    if (st) {
+        free(out->mode); free(out->shape);
+        out->mode = NULL, out->shape = NULL, out->n = 0;
+    }
+    return st;
 }
 
 int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out)
@@ -301,69 +387,11 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
     if (nev < 1 || nev > n - 1)
         return gal_error(GAL_EINPUT, "modes: %d modes asked of a system with %d degrees of freedom "
                          "(allowed: 1 to %d)", nev, n, n - 1);
-    modes_ws w;
-    int st = ws_alloc(&w, rod, nev);
+    gal_modes_ctx c;
+    int st = gal_modes_ctx_init(&c, rod, q);
     if (st) return st;
-    st = shift_factor(rod, q, &w, out);
-    if (!st) st = arpack(rod, &w, out);
-    if (!st) st = extract(rod, q, &w, out);
-    out->factorizations = w.chol->factorizations;
-    out->solves = w.chol->solves;
-    ws_free(&w);
-    out->rounds = 1;
+    st = gal_modes_run(&c, nev, 0, 1, out);
+    gal_modes_ctx_clear(&c);
     out->wall_time_s = gal_wall_time() - t0;
-    if (st) {
-        free(out->mode); free(out->shape);
-        out->mode = NULL, out->shape = NULL, out->n = 0;
-    }
     return st;
-}
-
-int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMILY_COUNT],
-                   int max_modes, gal_modes *out)
-{
-    double t0 = gal_wall_time();
-    int n = rod->ndof;
-    if (max_modes > n - 1) max_modes = n - 1;
-    /* estimate by string theory: transverse f_k = k f1, torsional f_k = k/(2 L0) sqrt(GJ/I) */
-    int total = want[0] + want[1] + want[2];
-    int nev = total + 4;
-    if (rod->p.torsion && want[GAL_FAMILY_TORSIONAL] > 0) {
-        double *g = malloc((size_t)rod->nq * sizeof(double));
-        double H = rod->p.EA; /* fallback */
-        if (g && gal_rod_eval(rod, q, NULL, g, NULL) == GAL_OK) H = fabs(g[0]);
-        free(g);
-        double L0 = rod->p.unstretched_length;
-        double f1 = sqrt(H / rod->p.mass) / (2 * L0);
-        double ft = want[GAL_FAMILY_TORSIONAL] * sqrt(rod->p.GJ / rod->p.polar_inertia) / (2 * L0);
-        int below = (int)(2 * ft / f1) + want[GAL_FAMILY_TORSIONAL];
-        if (below + 4 > nev) nev = below + 4;
-    }
-    int rounds = 0;
-    long op = 0, fact = 0, solves = 0;
-    for (;;) {
-        if (nev > max_modes) nev = max_modes;
-        int st = gal_modes_solve(rod, q, nev, out);
-        rounds++;
-        op += out->op_applications, fact += out->factorizations, solves += out->solves;
-        if (st) return st;
-        int short_family = 0;
-        for (int f = 0; f < 3; f++)
-            if (out->found[f] < want[f]) short_family = 1;
-        if (!short_family || nev >= max_modes) break;
-        gal_modes_clear(out);
-        nev *= 2;
-    }
-    for (int f = 0; f < GAL_FAMILY_COUNT; f++) out->selected[f] = 0;
-    for (int k = 0; k < out->n; k++) {
-        gal_mode *md = out->mode + k;
-        if (md->family < 3 && out->selected[md->family] < want[md->family]) {
-            md->selected = 1;
-            out->selected[md->family]++;
-        }
-    }
-    out->rounds = rounds;
-    out->op_applications = op, out->factorizations = fact, out->solves = solves;
-    out->wall_time_s = gal_wall_time() - t0;
-    return GAL_OK;
 }

@@ -10,12 +10,6 @@
 
 /* ---- sparse pattern ---- */
 
-static int cmp_pair(const void *a, const void *b)
-{
-    const long *x = a, *y = b;
-    return (*x > *y) - (*x < *y);
-}
-
 /* Configuration indices of the node stencil at interior node i and of edge j. */
 void gal_rod_node_q(const gal_rod *rod, int i, int *qi)
 {
@@ -62,21 +56,18 @@ static int slot_maps(gal_rod *rod)
     return GAL_OK;
 }
 
-int gal_rod_pattern_build(gal_rod *rod)
+/* The stencils' pairs (row da <= column db, every diagonal too) into pairs, as row * n + column. */
+static size_t stencil_pairs(const gal_rod *rod, long *pairs)
 {
-    int nel = rod->p.elements, nn = rod->nn;
-    size_t cap = (size_t)(nn - 2) * NL * NL + (size_t)nel * EL * EL + 16;
-    long *pairs = malloc(cap * sizeof(long));
-    if (!pairs) return GAL_ENOMEM;
-    size_t np = 0;
-    int qi[NL];
+    int nel = rod->p.elements, nn = rod->nn, qi[NL];
     long n = rod->ndof;
+    size_t np = 0;
     for (int i = 1; i <= nn - 2; i++) {
         gal_rod_node_q(rod, i, qi);
         for (int a = 0; a < NL; a++)
             for (int b = 0; b < NL; b++) {
                 int da = qi[a] < 0 ? -1 : rod->dof[qi[a]], db = qi[b] < 0 ? -1 : rod->dof[qi[b]];
-                if (da >= 0 && db >= 0 && da <= db) pairs[np++] = (long)db * n + da;
+                if (da >= 0 && db >= 0 && da <= db) pairs[np++] = (long)da * n + db;
             }
     }
     for (int j = 0; j < nel; j++) {
@@ -84,37 +75,57 @@ int gal_rod_pattern_build(gal_rod *rod)
         for (int a = 0; a < EL; a++)
             for (int b = 0; b < EL; b++) {
                 int da = rod->dof[qi[a]], db = rod->dof[qi[b]];
-                if (da >= 0 && db >= 0 && da <= db) pairs[np++] = (long)db * n + da;
+                if (da >= 0 && db >= 0 && da <= db) pairs[np++] = (long)da * n + db;
             }
     }
-    for (int d = 0; d < n; d++) pairs[np++] = (long)d * n + d; /* every diagonal */
-    qsort(pairs, np, sizeof(long), cmp_pair);
-    size_t nu = 0;
-    for (size_t k = 0; k < np; k++)
-        if (nu == 0 || pairs[k] != pairs[nu - 1]) pairs[nu++] = pairs[k];
+    for (long d = 0; d < n; d++) pairs[np++] = d * n + d;
+    return np;
+}
 
+/* The upper triangle's pattern from the stencils' pairs, without sorting: the pairs bucketed by
+ * row (a counting sort), then each row's columns, duplicates dropped by a marker, appended to
+ * their columns in increasing row order, so every column comes out sorted. O(pairs + n). */
+int gal_rod_pattern_build(gal_rod *rod)
+{
+    int n = rod->ndof;
+    size_t cap = (size_t)(rod->nn > 2 ? rod->nn - 2 : 0) * NL * NL + (size_t)rod->p.elements * EL * EL + (size_t)n;
+    long *pairs = malloc(cap * sizeof(long));
+    int *rowptr = calloc((size_t)n + 1, sizeof(int)), *cols = malloc(cap * sizeof(int));
+    int *mark = malloc((size_t)n * sizeof(int));
     gal_csc *A = calloc(1, sizeof *A);
-    if (!A) { free(pairs); return GAL_ENOMEM; }
-    A->n = (int)n;
-    A->nnz = (int)nu;
-    A->colptr = calloc((size_t)n + 1, sizeof(int));
-    A->rowind = malloc(nu * sizeof(int));
-    A->val = calloc(nu, sizeof(double));
-    A->diag = malloc((size_t)n * sizeof(int));
-    if (!A->colptr || !A->rowind || !A->val || !A->diag) {
-        free(pairs);
-        gal_csc_free(A);
-        return GAL_ENOMEM;
+    if (A) A->colptr = calloc((size_t)n + 1, sizeof(int)), A->diag = malloc((size_t)n * sizeof(int));
+    if (!pairs || !rowptr || !cols || !mark || !A || !A->colptr || !A->diag) goto fail;
+    size_t np = stencil_pairs(rod, pairs);
+    for (size_t k = 0; k < np; k++) rowptr[pairs[k] / n + 1]++;
+    for (int r = 0; r < n; r++) rowptr[r + 1] += rowptr[r];
+    for (size_t k = 0; k < np; k++) cols[rowptr[pairs[k] / n]++] = (int)(pairs[k] % n);
+    for (int r = n; r > 0; r--) rowptr[r] = rowptr[r - 1]; /* the fill moved each start to the next */
+    rowptr[0] = 0;
+    /* count the distinct entries per column, then place them */
+    for (int pass = 0; pass < 2; pass++) {
+        for (int j = 0; j < n; j++) mark[j] = -1;
+        for (int r = 0; r < n; r++)
+            for (int p = rowptr[r]; p < rowptr[r + 1]; p++) {
+                int c = cols[p];
+                if (mark[c] == r) continue;
+                mark[c] = r;
+                if (pass == 0) A->colptr[c + 1]++;
+                else A->rowind[A->diag[c]++] = r; /* diag: the fill position while placing */
+            }
+        if (pass == 1) break;
+        for (int j = 0; j < n; j++) A->colptr[j + 1] += A->colptr[j];
+        A->n = n, A->nnz = A->colptr[n];
+        A->rowind = malloc((size_t)A->nnz * sizeof(int));
+        A->val = calloc((size_t)A->nnz, sizeof(double));
+        if (!A->rowind || !A->val) goto fail;
+        memcpy(A->diag, A->colptr, (size_t)n * sizeof(int));
     }
-    for (size_t k = 0; k < nu; k++) {
-        int col = (int)(pairs[k] / n), row = (int)(pairs[k] % n);
-        A->rowind[k] = row;
-        A->colptr[col + 1]++;
-    }
-    for (int j = 0; j < n; j++) A->colptr[j + 1] += A->colptr[j];
-    for (int j = 0; j < n; j++) A->diag[j] = gal_csc_find(A, j, j);
-    free(pairs);
+    for (int j = 0; j < n; j++) A->diag[j] = A->colptr[j + 1] - 1; /* the diagonal is last in its column */
+    free(pairs); free(rowptr); free(cols); free(mark);
     rod->K = A;
-
     return slot_maps(rod);
+fail:
+    free(pairs); free(rowptr); free(cols); free(mark);
+    gal_csc_free(A);
+    return GAL_ENOMEM;
 }

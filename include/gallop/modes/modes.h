@@ -34,6 +34,8 @@ typedef struct gal_mode {
     gal_symmetry symmetry;
     double share[GAL_FAMILY_COUNT]; /* shares of modal kinetic energy, summing to 1 */
     int selected;          /* among the modes the scene asked for */
+    int index;             /* rank among all the modes of the span by frequency, from 1 (a search
+                            * by family computes a window of them: the ranks then have gaps) */
 } gal_mode;
 
 typedef struct gal_modes {
@@ -54,8 +56,11 @@ typedef struct gal_modes {
 int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out);
 
 /* Enough modes to hold `want[f]` modes of each family f (vertical, horizontal, torsional; axial
- * ignored): starts from an estimate by string theory and asks for more until every family is
- * found or `max_modes` is reached; marks the lowest want[f] of each family as selected. */
+ * ignored), the lowest want[f] of each family marked selected. The flexural families from the
+ * bottom of the spectrum (more asked until each is found or `max_modes` is reached); the torsional
+ * modes above them each by a shift at its estimate from the twist block of K and M, computing only
+ * the few modes nearest it (their ranks from the inertia of K - sigma M), checked (a torsional mode
+ * nearest its own estimate, with a small residual) or else found from the bottom as the flexural. */
 int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMILY_COUNT],
                    int max_modes, gal_modes *out);
 
