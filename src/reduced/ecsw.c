@@ -278,6 +278,11 @@ static int snapshots(gal_rom *m, int set, double *A, double *b)
         }
     for (int k = 0; k < r; k++) big = fmax(big, sqrt(rw[k]));
     for (int k = 0; k < r; k++) rw[k] = big > 0 ? 1 / fmax(sqrt(rw[k]), 1e-6 * big) : 1;
+    /* the loads along the modal derivatives (stretching) count against a tenth of the internal
+     * force there, which they hardly move, not against their own small size (measured: 14 load
+     * elements instead of 26 at 100 elements, amplitudes within 0.2% on bersimis_250_crescent) */
+    if (set == 1)
+        for (int k = m->nmodes; k < r; k++) rw[k] = fmin(rw[k], 10 * h->set[0].rw[k]);
     for (int s = 0; s < h->ns; s++) {
         double nb = 0;
         for (int k = 0; k < r; k++) {
