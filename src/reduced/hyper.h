@@ -37,4 +37,7 @@ typedef struct gal_rom_hyper {
     double check_error;
 } gal_rom_hyper;
 
+/* Training state s (deterministic in s) into x and its velocity into v (r each). */
+int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);
+
 #endif
