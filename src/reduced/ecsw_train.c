@@ -72,8 +72,8 @@ static void chol_solve(const double *L, int p, double *b)
 
 /* Training state s: the modes at a random amplitude and direction, each mode's largest
  * translation up to the sag (at least 1% of the span) and its largest twist up to hyper_twist;
- * the modal-derivative coordinates relaxed quasi-statically (chord iterations on K0r's block) so
- * that their force is the equilibrium's; a velocity of the same scale in the modes. */
+ * the modal-derivative coordinates relaxed quasi-statically (below) so that their force is the
+ * equilibrium's; a velocity of the same scale in the modes. */
 int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v)
 {
     gal_rom_hyper *h = m->hyper;
