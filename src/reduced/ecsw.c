@@ -293,7 +293,7 @@ int gal_rom_hyper_build(gal_rom *m)
     gal_rom_hyper *h = calloc(1, sizeof *h);
     if (!h) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample");
     m->hyper = h;
-    h->loads = m->force.eval && m->force.element;
+    h->loads = m->force.eval && m->force.element && m->o.hyper_loads;
     h->mirror = mirror_symmetric(m);
     for (int s = 0; s < 2; s++) {
         int ne = s == 0 ? gal_rod_element_count(rod) : nel;

@@ -7,6 +7,7 @@
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
 #include "gallop/reduced/ecsw.h"
+#include "reduced/hyper.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -80,7 +81,7 @@ static int external(gal_rom *m, double t, const double *x, const double *xd, dou
 {
     if (!m->force.eval) { memset(f, 0, (size_t)m->r * sizeof(double)); return GAL_OK; }
     m->force_evaluations++;
-    if (m->hyper && m->force.element) return gal_rom_hyper_external(m, t, x, xd, f);
+    if (m->hyper && m->hyper->loads) return gal_rom_hyper_external(m, t, x, xd, f);
     reconstruct(m, x, xd);
     memset(m->fq, 0, (size_t)m->nq * sizeof(double));
     int st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);

@@ -39,6 +39,7 @@ typedef struct gal_rom_opts {
     int max_newton;         /* per step; default 20 */
     /* hyper-reduction (ecsw.h) */
     int hyper;              /* 1: sampled, weighted elements (default); 0: every element */
+    int hyper_loads;        /* 1: the aerodynamic loads on a sample too (default); 0: on every element */
     double hyper_tol;       /* relative residual of the weights' fit; default 1e-2 */
     double hyper_check_tol; /* gal_rom_hyper_check's tolerance before re-sampling; default 2e-2 */
     double hyper_twist;     /* rad: the twist amplitude of the training states; default 1.5 */
