@@ -78,11 +78,11 @@ static const gal_rod_params iced = {.length = 150, .height_difference = 20, .ele
 
 /* The element split: the sum at weight 1 is gal_rod_eval (energy, gradient, tangent); an element's
  * gradient and Hessian are the differences of its energy and gradient. */
-static void test_element_split(void)
+static void element_split(const gal_rod_params *p)
 {
     span s;
     int want[4] = {2, 1, 1, 0};
-    if (make_span(&s, &iced, 4.0, want)) return;
+    if (make_span(&s, p, 4.0, want)) return;
     const gal_rod *rod = s.eq.rod;
     int nq = rod->nq, ne = gal_rod_element_count(rod);
     CHECK(ne == 2 * rod->p.elements - 1, "%d energy elements", ne);
@@ -121,6 +121,15 @@ static void test_element_split(void)
     gal_csc_free(K1); gal_csc_free(K2);
     free(q); free(g1); free(g2); free(w); free(el);
     free_span(&s);
+}
+
+/* every term: the iced span, and a bundle carried as one rod (its tension's torsional stiffness) */
+static void test_element_split(void)
+{
+    gal_rod_params p = iced;
+    element_split(&p);
+    p.bundle_radius2 = 0.04, p.ecc_mass = 0, p.ecc = 0;
+    element_split(&p);
 }
 
 /* |a - b| / |b - c| in the row weights of sample 0 */
