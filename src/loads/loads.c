@@ -76,6 +76,22 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
     return point(L, &ls, t, x, rdot, tan, d1, f, m);
 }
 
+/* The load of element j at its centre: force fe (N/m) and moment *me (N m/m). */
+static int element_load(const gal_loads *L, const gal_loads_list *ls, double t, const double *q, const double *v,
+                        int j, double fe[3], double *me)
+{
+    double r[3], rd[3], tg[3], d1[3];
+    fe[0] = fe[1] = fe[2] = 0, *me = 0;
+    for (int k = 0; k < 3; k++) {
+        r[k] = 0.5 * (q[3 * j + k] + q[3 * (j + 1) + k]);
+        rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
+    }
+    gal_rod_material_frame(L->rod, q, j, tg, d1);
+    int st = point(L, ls, t, r[0], rd, tg, d1, fe, me);
+    if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
+    return GAL_OK;
+}
+
 int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f)
 {
     const gal_loads *L = ctx;
@@ -84,14 +100,9 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
     const gal_rod *rod = L->rod;
     int nel = rod->p.elements, nn = rod->nn;
     for (int j = 0; j < nel; j++) {
-        double r[3], rd[3], tg[3], d1[3], fe[3] = {0, 0, 0}, me = 0;
-        for (int k = 0; k < 3; k++) {
-            r[k] = 0.5 * (q[3 * j + k] + q[3 * (j + 1) + k]);
-            rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
-        }
-        gal_rod_material_frame(rod, q, j, tg, d1);
-        int st = point(L, &ls, t, r[0], rd, tg, d1, fe, &me);
-        if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
+        double fe[3], me;
+        int st = element_load(L, &ls, t, q, v, j, fe, &me);
+        if (st) return st;
         double l0 = rod->l0[j];
         for (int k = 0; k < 3; k++) {
             f[3 * j + k] += 0.5 * l0 * fe[k];
@@ -99,6 +110,19 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
         }
         if (rod->p.torsion) f[3 * nn + j] += l0 * me;
     }
+    return GAL_OK;
+}
+
+int gal_loads_element(void *ctx, double t, const double *q, const double *v, int j, double f[7])
+{
+    const gal_loads *L = ctx;
+    gal_loads_list ls;
+    gal_loads_list_make(L, &ls);
+    double fe[3], me, l0 = L->rod->l0[j];
+    int st = element_load(L, &ls, t, q, v, j, fe, &me);
+    if (st) return st;
+    for (int k = 0; k < 3; k++) f[k] = f[3 + k] = 0.5 * l0 * fe[k];
+    f[6] = L->rod->p.torsion ? l0 * me : 0;
     return GAL_OK;
 }
 

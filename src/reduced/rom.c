@@ -6,6 +6,8 @@
  * a_m = (1-am) a1 + am a0, v_f = (1-af) v1 + af v0, and x1, v1 the Newmark updates in a1. */
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
+#include "gallop/reduced/ecsw.h"
+#include "reduced/hyper.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -41,9 +43,28 @@ static void project(const gal_rom *m, const double *g, double *f)
     }
 }
 
-/* Internal force at x, its energy into m->U1 (and the reduced tangent into Kr when Kr != NULL). */
+double *gal_rom_reconstruct_q(gal_rom *m, const double *x)
+{
+    reconstruct(m, x, NULL);
+    return m->q;
+}
+
+void gal_rom_reconstruct_at(gal_rom *m, const double *x, const double *xd)
+{
+    if (x) reconstruct(m, x, xd);
+    else memcpy(m->q, m->q_eq, (size_t)m->nq * sizeof(double));
+    if (!xd) memset(m->vq, 0, (size_t)m->nq * sizeof(double));
+}
+
+/* Internal force at x, its energy into m->U1 (and the reduced tangent into Kr when Kr != NULL):
+ * from the sample when the model is hyper-reduced. */
 static int internal(gal_rom *m, const double *x, double *f, double *Kr)
 {
+    if (m->hyper) {
+        int st = gal_rom_hyper_internal(m, x, f, Kr);
+        if (!st && Kr) m->tangents++;
+        return st;
+    }
     reconstruct(m, x, NULL);
     int st = gal_rod_eval(m->rod, m->q, &m->U1, m->gq, Kr ? m->K : NULL);
     if (st) return st;
@@ -59,9 +80,10 @@ static int internal(gal_rom *m, const double *x, double *f, double *Kr)
 static int external(gal_rom *m, double t, const double *x, const double *xd, double *f)
 {
     if (!m->force.eval) { memset(f, 0, (size_t)m->r * sizeof(double)); return GAL_OK; }
+    m->force_evaluations++;
+    if (m->hyper && m->hyper->loads) return gal_rom_hyper_external(m, t, x, xd, f);
     reconstruct(m, x, xd);
     memset(m->fq, 0, (size_t)m->nq * sizeof(double));
-    m->force_evaluations++;
     int st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
     if (st) return st;
     project(m, m->fq, f);
@@ -109,6 +131,7 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r;
     m->t = t;
+    m->hJ = 0, m->next_hyper_check = t + m->o.hyper_check_interval;
     /* x = V^T M (q - q_eq), x' = V^T M v */
     for (int s = 0; s < 2; s++) {
         double *dst = s ? m->v : m->x;
@@ -188,19 +211,20 @@ static int newton(gal_rom *m, double h)
     int r = m->r, st = GAL_OK;
     double af = m->af, t1 = m->t + h;
     memcpy(m->a1, m->a, (size_t)r * sizeof(double));
-    int it, conv = 0, fresh = 1;
+    /* modified Newton: the iteration matrix of an earlier step is kept (o.reuse_tangent) while it
+     * converges fast; a fresh tangent whenever an iteration did not gain a factor of 10 (the
+     * stretching directions are strongly nonlinear) */
+    int it, conv = 0, fresh = !(m->o.reuse_tangent && m->hJ == h), kept = !fresh;
     double prev = INFINITY;
     for (it = 0; it < m->o.max_newton; it++) {
         newmark(m, h);
-        /* the tangent again whenever the last iteration did not gain a factor of 10 (the
-         * stretching directions are strongly nonlinear) */
         if ((st = internal(m, m->x1, m->fi1, fresh ? m->Kr : NULL))) break;
         if ((st = external(m, t1, m->x1, m->v1, m->fe1))) break;
         double rn = residual(m);
         if (rn <= 1) { conv = 1; break; }
         if (!isfinite(rn)) { st = gal_error(GAL_EFAIL, "reduced model: the residual is not finite"); break; }
-        if (!fresh && rn > 0.1 * prev) {
-            fresh = 1;
+        if (!fresh && (rn > m->o.newton_contraction * prev || (kept && it >= m->o.newton_kept_max))) {
+            fresh = 1, kept = 0;
             if ((st = internal(m, m->x1, m->fi1, m->Kr))) break;
         }
         prev = rn;
@@ -208,8 +232,9 @@ static int newton(gal_rom *m, double h)
             double cm = 1 - m->am, cc = (1 - af) * m->gamma * h, ck = (1 - af) * m->beta * h * h;
             for (int k = 0; k < r * r; k++) m->J[k] = cc * m->Cr[k] + ck * m->Kr[k];
             for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
+            m->hJ = 0;
             if (lu_factor(m->J, r, m->piv)) { st = gal_error(GAL_EFAIL, "reduced model: singular iteration matrix"); break; }
-            fresh = 0;
+            m->hJ = h, fresh = 0;
         }
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
         lu_solve(m->J, r, m->piv, m->da);
@@ -250,6 +275,11 @@ int gal_rom_step(gal_rom *m)
     double t1 = m->t + m->o.h;
     int st = step(m, m->o.h, 0);
     if (st) return gal_error(st, "at t = %.6g s (after %d step halvings): %s", t1, GAL_ROM_HALVINGS, gal_error_message());
+    /* the sample against the exact projected forces every hyper_check_interval */
+    if (m->hyper && m->o.hyper_check_interval > 0 && m->t >= m->next_hyper_check - 1e-3 * m->o.h) {
+        m->next_hyper_check = m->t + m->o.hyper_check_interval;
+        if ((st = gal_rom_hyper_check(m, NULL))) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
+    }
     return GAL_OK;
 }
 
@@ -290,8 +320,13 @@ double gal_rom_element_tension(const gal_rom *m, int j)
 double gal_rom_energy(gal_rom *m)
 {
     double U = 0, T = 0;
-    reconstruct(m, m->x, NULL);
-    if (gal_rod_eval(m->rod, m->q, &U, NULL, NULL)) return NAN;
+    if (m->hyper) { /* the model's own energy U_h */
+        if (gal_rom_hyper_internal(m, m->x, m->fr, NULL)) return NAN;
+        U = m->U1;
+    } else {
+        reconstruct(m, m->x, NULL);
+        if (gal_rod_eval(m->rod, m->q, &U, NULL, NULL)) return NAN;
+    }
     for (int k = 0; k < m->r; k++) T += 0.5 * m->v[k] * m->v[k];
     return T + U;
 }

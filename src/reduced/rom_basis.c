@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "base/chol.h"
+#include "gallop/reduced/ecsw.h"
 
 void gal_rom_default_opts(gal_rom_opts *o)
 {
@@ -22,11 +23,16 @@ void gal_rom_default_opts(gal_rom_opts *o)
     o->rho_inf = 1.0;
     o->newton_tol = 1e-8;
     o->max_newton = 20;
+    o->hyper = 1, o->hyper_tol = 1e-2, o->hyper_check_tol = 2e-2, o->hyper_twist = 1.5, o->hyper_snapshots = 24;
+    o->hyper_check_interval = 1.0, o->hyper_loads = 1, o->reuse_tangent = 1;
+    o->newton_contraction = 0.1, o->newton_kept_max = 3;
 }
 
 gal_rom *gal_rom_free(gal_rom *m)
 {
     if (!m) return NULL;
+    gal_rom_hyper_free(m);
+    free(m->fr);
     free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
     gal_csc_free(m->K0); gal_csc_free(m->K);
     gal_chol_free(m->chol0);
@@ -113,11 +119,11 @@ static int alloc_state(gal_rom *m, int rmax)
     m->x = calloc(r, sizeof(double)), m->v = calloc(r, sizeof(double)), m->a = calloc(r, sizeof(double));
     m->fi = calloc(r, sizeof(double)), m->fe = calloc(r, sizeof(double));
     m->x1 = malloc(br), m->v1 = malloc(br), m->a1 = malloc(br), m->fi1 = malloc(br), m->fe1 = malloc(br), m->fdg = malloc(br);
-    m->res = malloc(br), m->da = malloc(br), m->piv = malloc((size_t)r * sizeof(int));
+    m->res = malloc(br), m->da = malloc(br), m->piv = malloc((size_t)r * sizeof(int)), m->fr = malloc(br);
     m->K0 = gal_csc_clone(m->rod->K), m->K = gal_csc_clone(m->rod->K);
     if (!m->V || !m->Cr || !m->K0r || !m->J || !m->Kr || !m->q_eq || !m->q || !m->vq || !m->gq || !m->fq ||
         !m->wn || !m->wn2 || !m->x || !m->v || !m->a || !m->fi || !m->fe || !m->x1 || !m->v1 || !m->a1 ||
-        !m->fi1 || !m->fe1 || !m->fdg || !m->res || !m->da || !m->piv || !m->K0 || !m->K)
+        !m->fi1 || !m->fe1 || !m->fdg || !m->res || !m->da || !m->piv || !m->K0 || !m->K || !m->fr)
         return gal_error(GAL_ENOMEM, "reduced model: out of memory for a basis of %d", r);
     return GAL_OK;
 }
@@ -181,6 +187,7 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     m->fscale = sqrt(fs);
     m->ffloor = 20 * 2.2e-16 * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0] * cs;
     free(MV); free(c);
+    if (m->o.hyper && gal_rom_hyper_build(m)) return gal_rom_free(m); /* the sample (ecsw.h) */
     if (gal_rom_start(m, 0.0, q_eq, NULL)) return gal_rom_free(m);
     m->build_time_s = gal_wall_time() - t0;
     return m;

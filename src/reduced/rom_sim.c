@@ -88,7 +88,7 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     ro.rho_inf = sc->simulation.rho_inf;
     ro.damping = d->damping; /* the structural damping of the pipeline */
     gal_force F = {0};
-    if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */
+    if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */
     gal_rom *m = gal_rom_alloc(rod, d->eq.q, md, sel, r, &ro, &F);
     if (!m) return GAL_EFAIL;
     int st = gal_rom_start(m, 0.0, d->q_start, NULL);

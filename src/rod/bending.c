@@ -33,4 +33,4 @@ static double node(const gal_rod *rod, int i, const double *q, const gal_rod_nod
     return k * f;
 }
 
-const gal_rod_term gal_rod_term_bending = {"bending", NULL, node};
+const gal_rod_term gal_rod_term_bending = {"bending", NULL, node, NULL};

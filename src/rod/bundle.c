@@ -95,5 +95,33 @@ static int clamps(const gal_rod *rod, const double *q, double *U, double *grad, 
     return GAL_OK;
 }
 
-const gal_rod_term gal_rod_term_bundle_torsion = {"bundle_torsion", NULL, node};
-const gal_rod_term gal_rod_term_bundle_clamps = {"bundle_clamps", clamps, NULL};
+/* The clamp's share on edge j alone (an end edge), over (x_j, x_{j+1}, theta_j): the same energy. */
+static int clamp_edge(const gal_rod *rod, int j, const double *q, double *U, double *g, double (*H)[7])
+{
+    int nel = rod->p.elements;
+    for (int side = 0; side < 2; side++) {
+        if (j != (side ? nel - 1 : 0)) continue;
+        double l0 = rod->l0[j], c = rod->p.EA * rod->p.bundle_radius2 / l0, e[3], t[3];
+        for (int d = 0; d < 3; d++) e[d] = q[3 * (j + 1) + d] - q[3 * j + d];
+        double le = gal_norm3(e), eps = le / l0 - 1.0, th = q[3 * rod->nn + j];
+        if (!(le > 1e-12 * l0)) return gal_error(GAL_EFAIL, "rod: element %d has collapsed (length %g m)", j, le);
+        for (int d = 0; d < 3; d++) t[d] = e[d] / le;
+        *U += c * eps * th * th;
+        for (int d = 0; d < 3; d++) g[d] -= c * th * th * t[d] / l0, g[3 + d] += c * th * th * t[d] / l0;
+        g[6] += 2 * c * eps * th;
+        if (!H) continue;
+        for (int a = 0; a < 3; a++) {
+            for (int b = 0; b < 3; b++) {
+                double h = c * th * th * ((a == b) - t[a] * t[b]) / (l0 * le);
+                H[a][b] += h, H[3 + a][3 + b] += h, H[a][3 + b] -= h, H[3 + a][b] -= h;
+            }
+            double hx = 2 * c * th * t[a] / l0;
+            H[3 + a][6] += hx, H[6][3 + a] += hx, H[a][6] -= hx, H[6][a] -= hx;
+        }
+        H[6][6] += 2 * c * eps;
+    }
+    return GAL_OK;
+}
+
+const gal_rod_term gal_rod_term_bundle_torsion = {"bundle_torsion", NULL, node, NULL};
+const gal_rod_term gal_rod_term_bundle_clamps = {"bundle_clamps", clamps, NULL, clamp_edge};

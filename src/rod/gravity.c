@@ -14,4 +14,18 @@ static int eval(const gal_rod *rod, const double *q, double *U, double *grad, ga
     return GAL_OK;
 }
 
-const gal_rod_term gal_rod_term_gravity = {"gravity", eval, NULL};
+/* Edge j's share: the weight of node j, and of the last node on the last edge. */
+static int edge(const gal_rod *rod, int j, const double *q, double *U, double *g, double (*H)[7])
+{
+    (void)H;
+    double gr = rod->p.gravity;
+    *U += rod->node_mass[j] * gr * q[3 * j + 2];
+    g[2] += rod->node_mass[j] * gr;
+    if (j == rod->p.elements - 1) {
+        *U += rod->node_mass[j + 1] * gr * q[3 * (j + 1) + 2];
+        g[5] += rod->node_mass[j + 1] * gr;
+    }
+    return GAL_OK;
+}
+
+const gal_rod_term gal_rod_term_gravity = {"gravity", eval, NULL, edge};

@@ -71,4 +71,18 @@ static int eval(const gal_rod *rod, const double *q, double *U, double *grad, ga
     return GAL_OK;
 }
 
-const gal_rod_term gal_rod_term_ice = {"ice_eccentricity", eval, NULL};
+/* Edge j alone: the weight moment of its ice, over theta_j (local 6). */
+static int edge(const gal_rod *rod, int j, const double *q, double *U, double *g, double (*H)[7])
+{
+    const gal_rod_params *p = &rod->p;
+    double *c = rod->ecc_c + 3 * j, *t = rod->tbar + 3 * j, tc[3];
+    gal_cross3(t, c, tc);
+    double th = q[3 * rod->nn + j], w = p->ecc_mass * p->gravity * p->ecc * rod->l0[j];
+    double cz = cos(th) * c[2] + sin(th) * tc[2], dcz = -sin(th) * c[2] + cos(th) * tc[2];
+    *U += w * cz;
+    g[6] += w * dcz;
+    if (H) H[6][6] -= w * cz;
+    return GAL_OK;
+}
+
+const gal_rod_term gal_rod_term_ice = {"ice_eccentricity", eval, NULL, edge};

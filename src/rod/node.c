@@ -84,3 +84,30 @@ int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, 
     }
     return GAL_OK;
 }
+
+int gal_rod_node_local(const gal_rod *rod, const gal_rod_term *const *t, int nt, int i, const double *q,
+                       double *U, double *g11, double *H11)
+{
+    gal_rod_node nd;
+    int st = geometry(rod, i, q, &nd);
+    if (st) return st;
+    double g[8], H[8][8];
+    memset(g, 0, sizeof g);
+    if (H11) memset(H, 0, sizeof H);
+    for (int k = 0; k < nt; k++) *U += t[k]->node(rod, i, q, &nd, g, H11 ? H : NULL);
+    /* node variable a = sum_r inc_c[a][r] * edge variable inc_v[a][r] */
+    for (int a = 0; a < NL; a++) {
+        double s = 0;
+        for (int r = 0; r < inc_n[a]; r++) s += inc_c[a][r] * g[inc_v[a][r]];
+        g11[a] += s;
+    }
+    if (H11)
+        for (int a = 0; a < NL; a++)
+            for (int b = 0; b < NL; b++) {
+                double h = 0;
+                for (int r = 0; r < inc_n[a]; r++)
+                    for (int c = 0; c < inc_n[b]; c++) h += inc_c[a][r] * inc_c[b][c] * H[inc_v[a][r]][inc_v[b][c]];
+                H11[a * NL + b] += h;
+            }
+    return GAL_OK;
+}

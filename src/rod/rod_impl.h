@@ -41,6 +41,12 @@ void gal_rod_twist_hessian(const gal_rod_node *nd, gal_rod_twist *s, double kt,
 int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, const double *q,
                       double *U, double *grad, gal_csc *K);
 
+/* The node terms t[0..nt-1] at interior node i alone: energy added to *U, gradient to g11 and
+ * Hessian to H11 (11 x 11 row-major; may be NULL) over the stencil's node variables (the order of
+ * gal_rod_node_q). */
+int gal_rod_node_local(const gal_rod *rod, const gal_rod_term *const *t, int nt, int i, const double *q,
+                       double *U, double *g11, double *H11);
+
 /* The mass matrix rod->M and its diagonal rod->mdiag from the current rest lengths. */
 void gal_rod_mass_build(gal_rod *rod);
 /* Eccentric ice (src/rod/ice.c): the directions of the ice centre (rod->ecc_c, left NULL without

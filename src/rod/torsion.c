@@ -124,5 +124,19 @@ static double node(const gal_rod *rod, int i, const double *q, const gal_rod_nod
     return kt * s.m * s.m;
 }
 
-const gal_rod_term gal_rod_term_torsion = {"torsion", NULL, node};
-const gal_rod_term gal_rod_term_torsion_clamps = {"torsion_clamps", clamps, NULL};
+const gal_rod_term gal_rod_term_torsion = {"torsion", NULL, node, NULL};
+/* Edge j alone: the clamp's share when j is an end edge, over theta_j (local 6). */
+static int clamp_edge(const gal_rod *rod, int j, const double *q, double *U, double *g, double (*H)[7])
+{
+    int nel = rod->p.elements;
+    for (int e = 0; e < 2; e++) {
+        if (j != (e ? nel - 1 : 0)) continue;
+        double kt = rod->p.GJ / rod->l0[j], th = q[3 * rod->nn + j];
+        *U += kt * th * th;
+        g[6] += 2 * kt * th;
+        if (H) H[6][6] += 2 * kt;
+    }
+    return GAL_OK;
+}
+
+const gal_rod_term gal_rod_term_torsion_clamps = {"torsion_clamps", clamps, NULL, clamp_edge};

@@ -75,7 +75,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     ro.rho_inf = o->rho_inf;
     ro.damping = d->damping; /* the structural damping of the pipeline */
     gal_force F = {0};
-    if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */
+    if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */
     s->m = m;
     s->tol = m->sc.model.residual_tolerance;
     s->warn = m->sc.model.on_invalid_warn;

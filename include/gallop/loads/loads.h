@@ -80,6 +80,10 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
  * unstretched element length, half to each node, moments to the twist. */
 int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f);
 
+/* The share of element j alone (gal_force.element signature): f[0..2] and f[3..5] on its two
+ * nodes, f[6] on its twist; gal_loads_full adds these over the elements. */
+int gal_loads_element(void *ctx, double t, const double *q, const double *v, int j, double f[7]);
+
 /* Static equilibrium under the mean wind (drag, lift and moment of the mean flow, no motion): q
  * is updated in place (start: the no-wind equilibrium). */
 int gal_loads_static(const gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations);

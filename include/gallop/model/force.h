@@ -15,6 +15,9 @@ extern "C" {
 typedef struct gal_force {
     int (*eval)(void *ctx, double t, const double *q, const double *v, double *f);
     void *ctx;
+    /* optional: the share of element j alone, f[0..6] on x_j, x_{j+1}, theta_j (set, not added);
+     * eval's result is the sum of these over the elements (hyper-reduction samples them) */
+    int (*element)(void *ctx, double t, const double *q, const double *v, int j, double f[7]);
 } gal_force;
 
 /* A distributed load per unit length at a point of the span (N/m and N m/m): position r, velocity

@@ -13,8 +13,9 @@
  * conserved to Newton's tolerance (undamped, unloaded). The model checks itself:
  * gal_rom_residual rebuilds the full state and evaluates the full equations' residual
  * M a + C v + grad U - F per family in a mass-weighted norm (gal_rom_check).
- * Present limit: grad U and F are evaluated on every element (gal_rod_eval has no subset yet), so
- * the cost of a step grows with the mesh; hyper-reduction (ECSW) plugs in at rom_internal(). */
+ * With o.hyper (default) grad U, its tangent and F are evaluated on sampled, weighted elements
+ * only (energy-conserving sampling and weighting, ecsw.h): the cost of a step does not grow with
+ * the mesh. */
 #ifndef GALLOP_ROM_H
 #define GALLOP_ROM_H
 
@@ -36,6 +37,19 @@ typedef struct gal_rom_opts {
     const gal_damping *damping; /* the full model's structural damping C (not owned; NULL: none) */
     double newton_tol;      /* relative; default 1e-8 */
     int max_newton;         /* per step; default 20 */
+    /* hyper-reduction (ecsw.h) */
+    int hyper;              /* 1: sampled, weighted elements (default); 0: every element */
+    int hyper_loads;        /* 1: the aerodynamic loads on a sample too (default); 0: on every element */
+    double hyper_tol;       /* relative residual of the weights' fit; default 1e-2 */
+    double hyper_check_tol; /* gal_rom_hyper_check's tolerance before re-sampling; default 2e-2 */
+    double hyper_twist;     /* rad: the twist amplitude of the training states; default 1.5 */
+    int hyper_snapshots;    /* training states; default 24 */
+    double hyper_check_interval; /* s: gal_rom_hyper_check every so often (default 1; 0: never) */
+    double newton_contraction; /* a fresh tangent when an iteration gains less than this factor
+                             * (default 0.1) */
+    int newton_kept_max;    /* ... or a kept one has not converged in this many (default 3) */
+    int reuse_tangent;      /* 1: keep the iteration matrix over steps while Newton converges fast
+                             * (default); 0: a fresh tangent each step */
 } gal_rom_opts;
 
 /* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'
@@ -80,6 +94,10 @@ typedef struct gal_rom {
     long steps, newton_iterations, tangents, force_evaluations;
     long halvings;          /* steps retried as two halves after Newton failed */
     double build_time_s;
+    struct gal_rom_hyper *hyper; /* the sample (ecsw.h), or NULL: every element */
+    double next_hyper_check; /* s */
+    double hJ;              /* s: the time step of the factorized iteration matrix J (0: none) */
+    double *fr;             /* r: scratch */
 } gal_rom;
 
 void gal_rom_default_opts(gal_rom_opts *o);
@@ -104,6 +122,10 @@ int gal_rom_advance(gal_rom *m, double t_target);
 
 /* The reconstructed full state: q = q_eq + V x, v = V x' (configuration-sized; either may be NULL). */
 void gal_rom_reconstruct(const gal_rom *m, double *q, double *v);
+/* The full reconstruction of x (NULL: the equilibrium) and xd (NULL: at rest) into m->q, m->vq. */
+void gal_rom_reconstruct_at(gal_rom *m, const double *x, const double *xd);
+/* The same for x alone; returns m->q. */
+double *gal_rom_reconstruct_q(gal_rom *m, const double *x);
 /* Axial tension (N) of element j of the reconstructed rod. */
 double gal_rom_element_tension(const gal_rom *m, int j);
 /* Kinetic plus elastic and gravity energy of the reduced state, J. */

@@ -62,12 +62,15 @@ struct gal_rod_node; /* the geometry of the two edges at an interior node (src/r
  *         there and adds its gradient to g (8) and Hessian to H (8 x 8; may be NULL) over the
  *         stencil's edge variables e0 = x_i - x_{i-1}, e1 = x_{i+1} - x_i, theta_{i-1}, theta_i.
  *         The node terms that follow each other in the list share one pass over the nodes: the
- *         geometry is computed once per node and their sum assembled once. */
+ *         geometry is computed once per node and their sum assembled once.
+ * An eval term also gives its share on one edge j alone (edge: energy, gradient added to g (7) and
+ * Hessian to H (7 x 7; may be NULL) over x_j, x_{j+1}, theta_j), for the element split below. */
 typedef struct gal_rod_term {
     const char *name;   /* the scene's effect: "extension", "bending", ... */
     int (*eval)(const struct gal_rod *rod, const double *q, double *U, double *grad, gal_csc *K);
     double (*node)(const struct gal_rod *rod, int i, const double *q, const struct gal_rod_node *nd,
                    double *g, double (*H)[8]);
+    int (*edge)(const struct gal_rod *rod, int j, const double *q, double *U, double *g, double (*H)[7]);
 } gal_rod_term;
 
 /* The terms, in the order gal_rod_eval sums them; each is in the list only when it is on:
@@ -124,6 +127,29 @@ int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *gr
 /* The same for rod->term[k] alone (0 <= k < rod->nterm; GAL_EINPUT otherwise). */
 int gal_rod_eval_term(const gal_rod *rod, int k, const double *q, double *energy, double *grad,
                       gal_csc *K);
+
+/* The element split of the energy (hyper-reduction: Farhat, Avery, Chapman & Cortial 2014):
+ * U = sum_e U_e over the gal_rod_element_count(rod) = 2 elements - 1 energy elements e: for
+ * e < elements, the eval terms on edge e (extension, clamped twist, eccentric ice, the weight of
+ * node e and, on the last edge, of the last node), over x_e, x_{e+1}, theta_e; for e >= elements,
+ * the node terms (bending, torsion) at interior node i = e - elements + 1, over its stencil
+ * x_{i-1}, x_i, x_{i+1}, theta_{i-1}, theta_i. The split maps onto itself under the mirror of the
+ * span (edge e <-> edge elements-1-e, node i <-> node elements-i). gal_rod_element_q lists the
+ * GAL_ROD_ELEMENT_NQ configuration entries of element e in the node stencil's order (-1: absent). */
+#define GAL_ROD_ELEMENT_NQ 11
+int gal_rod_element_count(const gal_rod *rod);
+/* The mirror image of energy element e. */
+int gal_rod_element_mirror(const gal_rod *rod, int e);
+void gal_rod_element_q(const gal_rod *rod, int e, int qi[GAL_ROD_ELEMENT_NQ]);
+/* U_e (J) into *energy, its gradient into g (11) and Hessian into H (11 x 11, row-major; may be
+ * NULL) over the entries of gal_rod_element_q (entries of absent ones are zero). GAL_EFAIL on a
+ * degenerate element. */
+int gal_rod_element_eval(const gal_rod *rod, int e, const double *q, double *energy, double *g, double *H);
+/* The weighted energy sum_k w[k] U_{elem[k]} (n elements), its gradient (configuration-sized,
+ * cleared first; may be NULL) and tangent (free dofs, on rod->K's pattern, cleared first; may be
+ * NULL): with every element at weight 1 it is gal_rod_eval's. */
+int gal_rod_eval_weighted(const gal_rod *rod, int n, const int *elem, const double *w, const double *q,
+                          double *energy, double *grad, gal_csc *K);
 
 /* Copy free entries of a configuration-sized vector to/from a dof-sized vector. */
 void gal_rod_gather(const gal_rod *rod, const double *full, double *free_part);

@@ -1,0 +1,43 @@
+/* hyper.h: the sample of the hyper-reduced reduced model (ecsw.h), shared by ecsw.c (training,
+ * fits, check) and ecsw_eval.c (the evaluations from the sample); not public. */
+#ifndef GALLOP_REDUCED_HYPER_H
+#define GALLOP_REDUCED_HYPER_H
+
+#include "gallop/reduced/ecsw.h"
+
+/* One sample: elements, weights and, per element, the index of each of its GAL_ROD_ELEMENT_NQ local
+ * entries in the union uq (-1: absent, fixed, or not the load's). */
+typedef struct gal_rom_hyper_set {
+    int n;
+    int *elem;
+    double *w;
+    int *idx;
+    int nu;                    /* the sample's free configuration entries */
+    int *uq;                   /* nu: their configuration indices */
+    double *Vu;                /* nu x r, row-major: V's rows there */
+    double fit_error;          /* the NNLS residual, relative */
+    double *rw;                /* r: the row weights of the fit and the check (1 / RMS of each
+                                * coordinate's force over the training states) */
+} gal_rom_hyper_set;
+
+typedef struct gal_rom_hyper {
+    gal_rom_hyper_set set[2];  /* 0: the rod's energy, 1: the aerodynamic loads */
+    int loads;                 /* the loads are sampled (gal_force.element given) */
+    double *fc, Uc, *Kc;       /* r, J, r x r: the constants that make U_h, its gradient and its
+                                * Hessian exact at x = 0: U_h = U_c + f_c.x + x.K_c x/2 + sum w U_e */
+    double *F0;                /* r: V^T grad U(q_eq) */
+    double amp;                /* m: the training states' largest translation */
+    int ns, cap;               /* training states: (x, v, t) rows of 2 r + 1 */
+    double *snap;
+    double *Jdd;               /* the modal-derivative block of a training state's reduced tangent */
+    double *gu;                /* nq: scratch of the projections */
+    double *T;                 /* GAL_ROD_ELEMENT_NQ x r: scratch of the tangent */
+    int mirror;                /* mirror pairs share one weight (a symmetric span) */
+    int refits;
+    double check_error;
+} gal_rom_hyper;
+
+/* Training state s (deterministic in s) into x and its velocity into v (r each). */
+int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);
+
+#endif
