@@ -30,6 +30,9 @@ static double median(double *v, int n)
     return n ? (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2])) : NAN;
 }
 
+static double tolerance = -1;
+static int policy = GAL_ROM_ADD_CORRECTION | GAL_ROM_ADD_MODE, relax = 1;
+
 static int one(const char *path, const char *const *ov, int nov, int deriv, double *speed, double *whole)
 {
     gal_scene sc;
@@ -43,6 +46,7 @@ static int one(const char *path, const char *const *ov, int nov, int deriv, doub
     gal_rom_sim_opts o;
     gal_rom_sim_default_opts(&o);
     o.derivatives = deriv;
+    o.tolerance = tolerance, o.policy = policy, o.relax = relax;
     tw = gal_wall_time();
     int sf = gal_sim_run(&s, GAL_MODEL_FULL, &rf);
     double tfull = gal_wall_time() - tw;
@@ -71,6 +75,10 @@ static int one(const char *path, const char *const *ov, int nov, int deriv, doub
                mf.peak_to_peak[3], et, mr.tension_max, mf.tension_max, 100 * eT, info.residual_max,
                info.residual_family[0], info.residual_family[1], info.residual_family[2], info.residual_family[3],
                *speed, *whole, info.build_time_s);
+        for (int e = 0; e < info.nevents; e++)
+            printf("  grew at t = %.1f s (residual %.3g, %s): basis %d -> %d (mode %d, %d correction)\n", info.ev[e].t_s,
+                   info.ev[e].residual, gal_family_names[info.ev[e].family], info.ev[e].basis_before,
+                   info.ev[e].basis_after, info.ev[e].mode_added, info.ev[e].corrections);
         fflush(stdout);
     }
     if (!sf) gal_sim_result_clear(&rf);
@@ -87,6 +95,9 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 32) ov[nov++] = argv[++i];
         else if (!strcmp(argv[i], "--derivatives") && i + 1 < argc) deriv = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--tolerance") && i + 1 < argc) tolerance = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--policy") && i + 1 < argc) policy = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--relax") && i + 1 < argc) relax = atoi(argv[++i]);
         else if (nsc < 64) scenes[nsc++] = argv[i];
     }
     glob_t g = {0};

@@ -36,6 +36,9 @@ typedef struct gal_rom_opts {
     const gal_damping *damping; /* the full model's structural damping C (not owned; NULL: none) */
     double newton_tol;      /* relative; default 1e-8 */
     int max_newton;         /* per step; default 20 */
+    const double *extra;    /* ndof x nextra, column-major: vectors appended after the modal
+                             * derivatives (the adaptation's corrections, rom_adapt.h); not owned */
+    int nextra;
 } gal_rom_opts;
 
 /* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'
@@ -110,6 +113,9 @@ double gal_rom_element_tension(const gal_rom *m, int j);
 double gal_rom_energy(gal_rom *m);
 /* The full equations' residual at the reconstructed state (see gal_rom_check). */
 int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
+/* The same, with the correcting displacement du = K0^-1 R over the free dofs into du (ndof; may
+ * be NULL). */
+int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du);
 /* The reduced internal force V^T grad U(q_eq + V x) (r entries). */
 int gal_rom_internal_force(gal_rom *m, const double *x, double *f);
 /* Kr = V^T K V (r x r) for a tangent K on the rod's pattern; work: ndof. */
