@@ -45,6 +45,53 @@ static void fam(const gal_rod *rod, const double *qeq, const double *y, double a
         }
 }
 
+static void print_modes(const gal_modes *md, int r)
+{
+    printf("modes computed %d, in the basis %d:", md->n, r);
+    for (int k = 0; k < md->n; k++)
+        printf(" %d%s(%c %.3f Hz)", k, md->mode[k].selected ? "*" : "", gal_family_names[md->mode[k].family][0],
+               md->mode[k].frequency_hz);
+    printf("\n");
+}
+
+/* e = u - V V^T M u: the part of the displacement u (free dofs) the basis misses; Mu: work. */
+static void miss(const gal_rom *m, const double *u, double *Mu, double *e)
+{
+    int n = m->ndof;
+    gal_rod_mass_mult(m->rod, u, Mu);
+    memcpy(e, u, n * sizeof(double));
+    for (int j = 0; j < m->r; j++) {
+        double x = 0;
+        for (int k = 0; k < n; k++) x += m->V[(size_t)j * n + k] * Mu[k];
+        for (int k = 0; k < n; k++) e[k] -= x * m->V[(size_t)j * n + k];
+    }
+}
+
+/* The reduced model with the full run's misses added to its basis (an oracle basis), measured
+ * against the full run on its window. */
+static void oracle(gal_sim_setup *s, const double *snap, int nsnap)
+{
+    gal_sim_result rf, rr;
+    gal_rom_sim_info info;
+    gal_rom_sim_opts o;
+    gal_rom_sim_default_opts(&o);
+    o.tolerance = 0, o.extra = snap, o.nextra = nsnap;
+    if (gal_sim_run(s, GAL_MODEL_FULL, &rf) || gal_rom_sim_run(s, &o, &rr, &info)) {
+        fprintf(stderr, "%s\n", gal_error_message());
+        return;
+    }
+    int k = gal_sim_mid_probe(&rf);
+    gal_sim_measures mf, mr;
+    gal_sim_measure(&rf, k, -1, &mf);
+    gal_sim_measure(&rr, k, mf.steady_from_s, &mr);
+    printf("oracle basis %d (+%d misses): f %.4f/%.4f v %.3f/%.3f h %.3f/%.3f tw %.1f/%.1f T %.0f/%.0f res %.3g\n",
+           info.basis, nsnap, mr.frequency_hz[1], mf.frequency_hz[1], mr.peak_to_peak[1], mf.peak_to_peak[1],
+           mr.peak_to_peak[0], mf.peak_to_peak[0], mr.peak_to_peak[3], mf.peak_to_peak[3], mr.tension_max_steady,
+           mf.tension_max_steady, info.residual_max);
+    gal_sim_result_clear(&rf);
+    gal_sim_result_clear(&rr);
+}
+
 int main(int argc, char **argv)
 {
     const char *ov[32];
@@ -68,11 +115,7 @@ int main(int argc, char **argv)
     /* --extra N: the next N computed modes (by frequency, not selected) join the basis */
     for (int k = 0; k < md->n && nextra > 0; k++)
         if (!md->mode[k].selected && md->mode[k].frequency_hz > 0.01) sel[r++] = k, nextra--;
-    printf("modes computed %d, in the basis %d:", md->n, r);
-    for (int k = 0; k < md->n; k++)
-        printf(" %d%s(%c %.3f Hz)", k, md->mode[k].selected ? "*" : "", gal_family_names[md->mode[k].family][0],
-               md->mode[k].frequency_hz);
-    printf("\n");
+    print_modes(md, r);
     double dt_out = sc.simulation.output_interval > 0 ? sc.simulation.output_interval : fmin(0.05, 1 / (10 * fhi));
     double h = sc.simulation.time_step > 0 ? sc.simulation.time_step : fmin(dt_out, 1 / (40 * fhi));
     h = dt_out / ceil(dt_out / h - 1e-9);
@@ -92,31 +135,18 @@ int main(int argc, char **argv)
     double *me = calloc(md->n, sizeof(double));
     double T = sc.simulation.duration, next = T / 2, emax[4] = {0}, ru[4] = {0}, resmax = 0, resf[4] = {0};
     int cnt = 0, nsnap = 0, snapmax = 64;
-    double *snap = malloc((size_t)n * snapmax * sizeof(double)), snap_from = T - 8, snap_next = T - 8;
+    double *snap = malloc((size_t)n * snapmax * sizeof(double)), snap_next = T - 8;
     while (dyn->t < T - 1e-9) {
         if (gal_dyn_step(dyn)) { fprintf(stderr, "full: %s\n", gal_error_message()); return 1; }
         if (dyn->t >= snap_next - 1e-9 && nsnap < snapmax) { /* the miss over the last 8 s, every 0.25 s */
             snap_next += 0.25;
-            double *e2 = snap + (size_t)nsnap++ * n;
             for (int k = 0; k < n; k++) u[k] = dyn->q[rod->free_q[k]] - d->eq.q[rod->free_q[k]];
-            gal_rod_mass_mult(rod, u, Mu);
-            memcpy(e2, u, n * sizeof(double));
-            for (int j = 0; j < m->r; j++) {
-                double x = 0;
-                for (int k = 0; k < n; k++) x += m->V[(size_t)j * n + k] * Mu[k];
-                for (int k = 0; k < n; k++) e2[k] -= x * m->V[(size_t)j * n + k];
-            }
+            miss(m, u, Mu, snap + (size_t)nsnap++ * n);
         }
         if (dyn->t < next - 1e-9) continue;
         next += 1.0;
         for (int k = 0; k < n; k++) u[k] = dyn->q[rod->free_q[k]] - d->eq.q[rod->free_q[k]];
-        gal_rod_mass_mult(rod, u, Mu);
-        memcpy(e, u, n * sizeof(double));
-        for (int j = 0; j < m->r; j++) {
-            double x = 0;
-            for (int k = 0; k < n; k++) x += m->V[(size_t)j * n + k] * Mu[k];
-            for (int k = 0; k < n; k++) e[k] -= x * m->V[(size_t)j * n + k];
-        }
+        miss(m, u, Mu, e);
         double ae[4], au[4];
         fam(rod, d->eq.q, e, ae);
         fam(rod, d->eq.q, u, au);
@@ -126,7 +156,6 @@ int main(int argc, char **argv)
             emax[f] = fmax(emax[f], rel), ru[f] += rel;
         }
         gal_rod_mass_mult(rod, e, Mu);
-        (void)snap_from;
         for (int k = 0; k < md->n; k++) {
             double c = 0;
             for (int j = 0; j < n; j++) c += md->shape[(size_t)k * n + j] * Mu[j];
@@ -143,28 +172,9 @@ int main(int argc, char **argv)
     for (int f = 0; f < 4; f++) printf("%s %.3f/%.3f  ", gal_family_names[f], ru[f] / cnt, emax[f]);
     printf("\nresidual at the projected full states: max %.3f [v %.3f h %.3f t %.3f a %.3f]\n", resmax, resf[0],
            resf[1], resf[2], resf[3]);
-    printf("miss carried by the computed modes (mean M-norm^2 share of the miss, per mode):");
-    double tm = 0;
-    for (int k = 0; k < md->n; k++) tm += me[k];
+    printf("miss carried by the computed modes (mean squared modal coordinate of the miss, per mode):");
     for (int k = 0; k < md->n; k++) printf(" %d:%.3g", k, me[k] / cnt);
     printf("\n");
-    /* the reduced model with the full run's misses added to its basis (an oracle basis) */
-    gal_sim_result rf, rr;
-    gal_rom_sim_info info;
-    gal_rom_sim_opts o;
-    gal_rom_sim_default_opts(&o);
-    o.tolerance = 0, o.extra = snap, o.nextra = nsnap;
-    if (gal_sim_run(&s, GAL_MODEL_FULL, &rf) || gal_rom_sim_run(&s, &o, &rr, &info)) {
-        fprintf(stderr, "%s\n", gal_error_message());
-        return 1;
-    }
-    int k = gal_sim_mid_probe(&rf);
-    gal_sim_measures mf, mr;
-    gal_sim_measure(&rf, k, -1, &mf);
-    gal_sim_measure(&rr, k, mf.steady_from_s, &mr);
-    printf("oracle basis %d (+%d misses): f %.4f/%.4f v %.3f/%.3f h %.3f/%.3f tw %.1f/%.1f T %.0f/%.0f res %.3g\n",
-           info.basis, nsnap, mr.frequency_hz[1], mf.frequency_hz[1], mr.peak_to_peak[1], mf.peak_to_peak[1],
-           mr.peak_to_peak[0], mf.peak_to_peak[0], mr.peak_to_peak[3], mf.peak_to_peak[3], mr.tension_max,
-           mf.tension_max, info.residual_max);
+    oracle(&s, snap, nsnap);
     return 0;
 }
