@@ -10,6 +10,7 @@
 
 void gal_rom_sim_default_opts(gal_rom_sim_opts *o)
 {
+    memset(o, 0, sizeof *o);
     o->derivatives = 1;
     o->h = 0;
     o->check_interval = 1.0;
