@@ -36,6 +36,15 @@ if [ $rc -eq 0 ] && grep -q '"valid": false' "$tmp/c/summary.json" && grep -q 'v
 else
   bad "on_invalid = warn: exit $rc: $(cat "$tmp/err")"
 fi
+# the adaptation tried first: the growths logged in summary.json, the basis larger than at the start
+b0=$(grep -o '"basis_start": [0-9]*' "$tmp/c/summary.json" | grep -o '[0-9]*$')
+b1=$(grep -o '"basis": [0-9]*' "$tmp/c/summary.json" | grep -o '[0-9]*$')
+if [ -n "$b0" ] && [ -n "$b1" ] && [ "$b1" -gt "$b0" ] && grep -q '"basis_after": ' "$tmp/c/summary.json" &&
+   grep -q '"corrections_added": 1' "$tmp/c/summary.json"; then
+  ok "the basis grew before the run was marked invalid ($b0 -> $b1), logged in summary.json"
+else
+  bad "no growth logged in summary.json (basis $b0 -> $b1)"
+fi
 "$GALLOP" compare "$scene" "${rom[@]}" --set model.residual_tolerance=1e-6 -o "$tmp/d" >/dev/null 2>"$tmp/err"
 rc=$?
 if [ $rc -eq 1 ] && [ -s "$tmp/d/trace.csv" ] && grep -q '"model": "full"' "$tmp/d/summary.json" &&

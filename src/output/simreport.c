@@ -81,6 +81,24 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
         gal_json_kv_num(j, "residual_max", r->residual_max);
         gal_json_key(j, "valid");
         gal_json_bool(j, r->valid);
+        gal_json_kv_int(j, "basis_start", r->basis_start);
+        gal_json_kv_int(j, "basis", r->basis);
+        gal_json_key(j, "basis_growths"); /* rom_adapt.h: when and what the adaptation added */
+        gal_json_arr_begin(j);
+        for (int k = 0; k < r->growths; k++) {
+            const gal_rom_event *e = &r->growth[k];
+            gal_json_obj_begin(j);
+            gal_json_kv_num(j, "time_s", e->t_s);
+            gal_json_kv_num(j, "residual", e->residual);
+            gal_json_kv_str(j, "family", gal_family_names[e->family]);
+            gal_json_kv_int(j, "basis_before", e->basis_before);
+            gal_json_kv_int(j, "basis_after", e->basis_after);
+            /* the mode by its frequency: the adaptation may have computed more modes than modes.csv lists */
+            if (e->mode_added >= 0) gal_json_kv_num(j, "mode_added_hz", e->mode_added_hz);
+            gal_json_kv_int(j, "corrections_added", e->corrections);
+            gal_json_obj_end(j);
+        }
+        gal_json_arr_end(j);
     }
 }
 

@@ -149,7 +149,7 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     if (o) m->o = *o;
     else gal_rom_default_opts(&m->o);
     if (force) m->force = *force;
-    int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0);
+    int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + (m->o.nextra > 0 ? m->o.nextra : 0);
     double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc((size_t)2 * n * sizeof(double));
     m->omega2 = malloc((size_t)nsel * sizeof(double));
     if (!MV || !c || !m->omega2 || alloc_state(m, rmax)) goto fail;
@@ -169,6 +169,11 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
         if (m->r == r0) { gal_error(GAL_EFAIL, "reduced model: mode %d repeats the others", sel[k]); goto fail; }
     }
     if (m->o.derivatives && derivatives(m, MV, nsel)) goto fail;
+    for (int k = 0; k < m->o.nextra; k++) {
+        memcpy(c, m->o.extra + (size_t)k * n, (size_t)n * sizeof(double));
+        orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol);
+    }
+    m->o.extra = NULL; /* not owned: not kept past the build */
     gal_rom_project_tangent(m, m->K0, m->K0r, c);
     int r = m->r;
     memset(m->Cr, 0, (size_t)r * r * sizeof(double));

@@ -51,6 +51,11 @@ static void accumulate(const gal_rom *m, const double *y, const double *mdiag, d
 
 int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
 {
+    return gal_rom_residual_dir(m, chk, NULL);
+}
+
+int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
+{
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r, st = GAL_OK;
     memset(chk, 0, sizeof *chk);
@@ -75,6 +80,7 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
     for (int d = 0; d < n; d++) y[TERM_R][d] = y[TERM_MA][d] + y[TERM_CV][d] + y[TERM_G][d] - y[TERM_F][d];
     /* du = K0^-1 R and the displacement u = V x */
     if ((st = gal_chol_solve(m->chol0, y[TERM_R], y[TERM_R]))) goto done;
+    if (du) memcpy(du, y[TERM_R], (size_t)n * sizeof(double));
     for (int d = 0; d < n; d++) {
         double s = 0;
         for (int k = 0; k < r; k++) s += m->V[(size_t)k * n + d] * m->x[k];

@@ -1,6 +1,6 @@
 /* rom_sim.c: a run of a scene by the recomputed reduced model on the full model's set-up: the same
  * sampling, time step, Rayleigh damping, loads and probes as gal_sim_run, with the residual
- * self-check every check_interval seconds. */
+ * self-check every check_interval seconds and the adaptation (rom_adapt.h) past the tolerance. */
 #include "gallop/reduced/rom_sim.h"
 #include "gallop/base/core.h"
 
@@ -10,10 +10,14 @@
 
 void gal_rom_sim_default_opts(gal_rom_sim_opts *o)
 {
+    memset(o, 0, sizeof *o);
     o->derivatives = 1;
     o->h = 0;
     o->check_interval = 1.0;
     o->check_from = 0;
+    o->tolerance = -1; /* the scene's */
+    o->policy = GAL_ROM_ADD_CORRECTION | GAL_ROM_ADD_MODE;
+    o->relax = 1;
 }
 
 /* One sample row (horizontal, vertical, along, twist per probe) and the support tensions. */
@@ -22,27 +26,42 @@ static void sample(const gal_rom *m, const gal_sim_result *res, long i)
     gal_rom_observe(m, res->nprobe, res->probe, res->trace + (size_t)i * 4 * res->nprobe, res->tension + 2 * i);
 }
 
-static int run_loop(gal_rom *m, const gal_rom_sim_opts *o, gal_sim_result *res, int sub, gal_rom_sim_info *info)
+/* The check at the state reached: past tol the basis grows (once per check). */
+static int check(gal_rom_adapt *a, gal_rom **m, double tol, gal_rom_sim_info *info, double *du)
+{
+    gal_rom_check chk;
+    int st = gal_rom_residual_dir(*m, &chk, du);
+    if (st) return st;
+    info->checks++;
+    if (tol > 0 && chk.max > tol) {
+        st = gal_rom_adapt_grow(a, m, &chk, du);
+        if (st == GAL_OK) return GAL_OK;
+        if (st != GAL_ROM_ELIMIT) return st;
+        info->valid = 0; /* it cannot grow: kept, marked invalid */
+    }
+    info->residual_max = fmax(info->residual_max, chk.max);
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) info->residual_family[f] = fmax(info->residual_family[f], chk.rel[f]);
+    return GAL_OK;
+}
+
+static int run_loop(gal_rom_adapt *a, gal_rom **m, const gal_rom_sim_opts *o, double tol, gal_sim_result *res,
+                    int sub, gal_rom_sim_info *info)
 {
     double next_check = o->check_from;
-    for (long i = 0; i < res->nsamples; i++) {
-        if (i > 0)
-            for (int k = 0; k < sub; k++) {
-                int st = gal_rom_step(m);
-                if (st) return st;
-            }
-        sample(m, res, i);
-        if (o->check_interval > 0 && m->t >= next_check - 1e-9) {
-            gal_rom_check chk;
-            int st = gal_rom_residual(m, &chk);
-            if (st) return st;
-            info->checks++;
-            info->residual_max = fmax(info->residual_max, chk.max);
-            for (int f = 0; f < GAL_FAMILY_COUNT; f++) info->residual_family[f] = fmax(info->residual_family[f], chk.rel[f]);
+    double *du = malloc((size_t)a->rod->ndof * sizeof(double));
+    if (!du) return gal_error(GAL_ENOMEM, "reduced run: out of memory");
+    int st = GAL_OK;
+    for (long i = 0; i < res->nsamples && !st; i++) {
+        for (int k = 0; k < sub && i > 0 && !st; k++) st = gal_rom_step(*m);
+        if (st) break;
+        sample(*m, res, i);
+        if (o->check_interval > 0 && (*m)->t >= next_check - 1e-9) {
+            st = check(a, m, tol, info, du);
             next_check += o->check_interval;
         }
     }
-    return GAL_OK;
+    free(du);
+    return st;
 }
 
 int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result *res, gal_rom_sim_info *info)
@@ -87,15 +106,26 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     ro.h = dt_out / sub;
     ro.rho_inf = sc->simulation.rho_inf;
     ro.damping = d->damping; /* the structural damping of the pipeline */
+    ro.extra = o->extra, ro.nextra = o->nextra;
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */
-    gal_rom *m = gal_rom_alloc(rod, d->eq.q, md, sel, r, &ro, &F);
-    if (!m) return GAL_EFAIL;
-    int st = gal_rom_start(m, 0.0, d->q_start, NULL);
+    gal_rom_adapt a;
+    gal_rom *m;
+    int st = gal_rom_adapt_init(&a, &m, rod, d->eq.q, md, sel, r, &ro, &F);
+    if (st) { gal_rom_adapt_clear(&a); return st; }
+    a.policy = o->policy, a.relax = o->relax;
+    st = gal_rom_start(m, 0.0, d->q_start, NULL);
     info->build_time_s = res->build_time_s = gal_wall_time() - tb;
-    info->basis = res->basis = m->r;
+    info->basis_start = m->r;
+    info->valid = 1;
+    double tol = o->tolerance < 0 ? sc->model.residual_tolerance : o->tolerance;
     double t0 = gal_wall_time();
-    if (!st) st = run_loop(m, o, res, sub, info);
+    if (!st) st = run_loop(&a, &m, o, tol, res, sub, info);
+    info->basis = res->basis = m->r;
+    info->valid = !(tol > 0) || info->residual_max <= tol;
+    info->nevents = a.nevents;
+    memcpy(info->ev, a.ev, sizeof a.ev);
+    gal_rom_adapt_clear(&a);
     res->wall_time_s = gal_wall_time() - t0;
     res->steps = m->steps, res->newton_iterations = m->newton_iterations;
     res->force_evaluations = m->force_evaluations, res->factorizations = m->tangents;

@@ -2,13 +2,17 @@
  * (integrator.h): the basis built from the selected modes (none at or near 0 Hz) and their modal
  * derivatives about the equilibrium, fixed generalized-alpha steps, the probes and the support
  * tensions from the reconstructed rod, and the self-check (gal_rom_residual) every second of
- * simulated time against model.residual_tolerance: past it the run stops (model.on_invalid =
- * stop) or goes on marked invalid (warn). */
+ * simulated time against model.residual_tolerance: past it the basis grows (rom_adapt.h: the
+ * residual's correction direction and the next mode of the family whose residual is largest, the
+ * model rebuilt and restarted from the same rod state; logged in summary.json basis_growths);
+ * when it cannot grow any more the run stops (model.on_invalid = stop) or goes on marked invalid
+ * (warn). */
 #include "gallop/run/integrator.h"
 #include "gallop/base/core.h"
-#include "gallop/reduced/rom.h"
+#include "gallop/reduced/rom_adapt.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -20,6 +24,9 @@ static const char *const family_keys[GAL_FAMILY_COUNT] = {"modes_vertical", "mod
 
 typedef struct {
     gal_rom *rom;
+    gal_rom_adapt adapt;
+    double *du;             /* ndof: the last check's correction direction */
+    int basis_start;
     const gal_model *m;
     double next_check, tol;
     int warn, checks, valid;
@@ -37,6 +44,8 @@ static void rom_free(void *state)
     rom_state *s = state;
     if (!s) return;
     gal_rom_free(s->rom);
+    gal_rom_adapt_clear(&s->adapt);
+    free(s->du);
     free(s);
 }
 
@@ -80,11 +89,13 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     s->tol = m->sc.model.residual_tolerance;
     s->warn = m->sc.model.on_invalid_warn;
     s->valid = 1;
-    s->rom = gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, sel, r, &ro, &F);
-    if (!s->rom) {
+    if ((st = gal_rom_adapt_init(&s->adapt, &s->rom, d->eq.rod, d->eq.q, &d->md, sel, r, &ro, &F)) ||
+        !(s->du = malloc((size_t)d->eq.rod->ndof * sizeof(double)))) {
+        if (!st) st = gal_error(GAL_ENOMEM, "simulate: out of memory");
         rom_free(s);
-        return GAL_EFAIL;
+        return st;
     }
+    s->basis_start = s->rom->r;
     if ((st = gal_rom_start(s->rom, 0.0, d->q_start, NULL))) {
         rom_free(s);
         return st;
@@ -93,25 +104,34 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     return GAL_OK;
 }
 
-/* The self-check at the state reached; GAL_EFAIL naming what grew when it fails and stop is asked. */
+/* The self-check at the state reached: past model.residual_tolerance the basis grows
+ * (rom_adapt.h) and the run goes on from the same state; when it cannot grow, GAL_EFAIL naming
+ * what grew (model.on_invalid = stop) or the run goes on marked invalid (warn). */
 static int self_check(rom_state *s)
 {
     gal_rom_check chk;
-    int st = gal_rom_residual(s->rom, &chk);
+    char why[256] = "";
+    int st = gal_rom_residual_dir(s->rom, &chk, s->du);
     if (st) return st;
     s->checks++;
+    if (chk.max > s->tol && s->valid) {
+        st = gal_rom_adapt_grow(&s->adapt, &s->rom, &chk, s->du);
+        if (st == GAL_OK) return GAL_OK;
+        if (st != GAL_ROM_ELIMIT) return st;
+        snprintf(why, sizeof why, "%s", gal_error_message());
+    }
     if (chk.max > s->residual_max) s->residual_max = chk.max, s->worst = chk;
     if (chk.max <= s->tol || !s->valid) return GAL_OK;
     s->valid = 0;
-    if (s->warn) return GAL_OK;
     int f = 0;
     for (int k = 1; k < GAL_FAMILY_COUNT; k++)
         if (chk.rel[k] > chk.rel[f]) f = k;
+    if (s->warn) return GAL_OK;
     return gal_error(GAL_EFAIL, "%s: the reduced model's residual grew to %.3g in the %s family at t = %.4g s, past "
-                     "model.residual_tolerance = %.3g (amplitudes no longer within ~5%%): select more modes "
-                     "(model.%s), raise model.residual_tolerance, or set model.on_invalid = warn to finish the run "
-                     "marked invalid", s->m->sc.path, chk.rel[f], gal_family_names[f], s->rom->t, s->tol,
-                     family_keys[f]);
+                     "model.residual_tolerance = %.3g (amplitudes no longer within ~5%%), and it cannot adapt: %s; "
+                     "select more modes (model.%s), raise model.residual_tolerance, or set model.on_invalid = warn "
+                     "to finish the run marked invalid", s->m->sc.path, chk.rel[f], gal_family_names[f], s->rom->t,
+                     s->tol, why, family_keys[f]);
 }
 
 static int rom_advance(void *state, double t_out, double t_end)
@@ -119,6 +139,11 @@ static int rom_advance(void *state, double t_out, double t_end)
     (void)t_end;
     rom_state *s = state;
     int st = gal_rom_advance(s->rom, t_out);
+    if (st) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", gal_error_message());
+        return gal_error(st, "reduced model (basis %d): %s", s->rom->r, why);
+    }
     if (!st && s->rom->t >= s->next_check - 1e-9) {
         st = self_check(s);
         s->next_check += CHECK_INTERVAL;
@@ -143,6 +168,8 @@ static void rom_counters(const void *state, gal_run_counters *c)
     c->basis = r->r;
     c->build_time_s = r->build_time_s;
     c->checked = s->checks > 0, c->residual_max = s->residual_max, c->valid = s->valid;
+    c->basis_start = s->basis_start, c->growths = s->adapt.nevents;
+    memcpy(c->growth, s->adapt.ev, sizeof s->adapt.ev);
 }
 
 const gal_integrator_type gal_integrator_rom = {

@@ -112,6 +112,8 @@ int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const
     res->force_evaluations = c.force_evaluations, res->rejected_steps = c.rejected_steps;
     res->basis = c.basis, res->load_cases = c.load_cases, res->build_time_s = c.build_time_s;
     res->checked = c.checked, res->residual_max = c.residual_max, res->valid = c.valid;
+    res->basis_start = c.basis_start, res->growths = c.growths;
+    memcpy(res->growth, c.growth, sizeof c.growth);
     return st;
 }
 

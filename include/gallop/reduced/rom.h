@@ -50,6 +50,9 @@ typedef struct gal_rom_opts {
     int newton_kept_max;    /* ... or a kept one has not converged in this many (default 3) */
     int reuse_tangent;      /* 1: keep the iteration matrix over steps while Newton converges fast
                              * (default); 0: a fresh tangent each step */
+    const double *extra;    /* ndof x nextra, column-major: vectors appended after the modal
+                             * derivatives (the adaptation's corrections, rom_adapt.h); not owned */
+    int nextra;
 } gal_rom_opts;
 
 /* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'
@@ -132,6 +135,9 @@ double gal_rom_element_tension(const gal_rom *m, int j);
 double gal_rom_energy(gal_rom *m);
 /* The full equations' residual at the reconstructed state (see gal_rom_check). */
 int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
+/* The same, with the correcting displacement du = K0^-1 R over the free dofs into du (ndof; may
+ * be NULL). */
+int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du);
 /* The reduced internal force V^T grad U(q_eq + V x) (r entries). */
 int gal_rom_internal_force(gal_rom *m, const double *x, double *f);
 /* Kr = V^T K V (r x r) for a tangent K on the rod's pattern; work: ndof. */

@@ -5,7 +5,7 @@
 #ifndef GALLOP_ROM_SIM_H
 #define GALLOP_ROM_SIM_H
 
-#include "gallop/reduced/rom.h"
+#include "gallop/reduced/rom_adapt.h"
 #include "gallop/run/sim.h"
 
 #ifdef __cplusplus
@@ -17,11 +17,21 @@ typedef struct gal_rom_sim_opts {
     double h;                 /* s: time step; <= 0: the full model's */
     double check_interval;    /* s: residual check every so often (default 1) */
     double check_from;        /* s: checks start then (default 0) */
+    double tolerance;         /* a check past it grows the basis (rom_adapt.h); <= 0: never (default:
+                               * the scene's model.residual_tolerance) */
+    int policy;               /* GAL_ROM_ADD_* bits (default both) */
+    int relax;                /* the new stiff directions start quasi-static (1, default) */
+    const double *extra;      /* ndof x nextra: vectors added to the initial basis (gal_rom_opts) */
+    int nextra;
 } gal_rom_sim_opts;
 
 typedef struct gal_rom_sim_info {
     int basis;                /* basis size */
-    double residual_max;      /* the largest checked residual (gal_rom_check.max) */
+    double residual_max;      /* the largest residual of the checks that did not grow the basis */
+    int valid;                /* residual_max within the tolerance */
+    int basis_start;          /* the initial basis size */
+    int nevents;              /* growths of the basis */
+    gal_rom_event ev[GAL_ROM_EVENTS_MAX];
     double residual_family[GAL_FAMILY_COUNT]; /* the largest per family */
     int checks;
     double build_time_s;      /* the model's own set-up (after statics and modes) */

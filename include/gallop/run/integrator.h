@@ -11,6 +11,7 @@
 #ifndef GALLOP_INTEGRATOR_H
 #define GALLOP_INTEGRATOR_H
 
+#include "gallop/reduced/rom_adapt.h"
 #include "gallop/run/forward.h"
 
 #ifdef __cplusplus
@@ -38,6 +39,8 @@ typedef struct gal_run_counters {
     int checked;             /* recomputed reduced model: its self-check ran (then the two below) */
     double residual_max;     /* the largest relative residual it found */
     int valid;               /* 1: residual_max within model.residual_tolerance */
+    int basis_start, growths;/* recomputed reduced model: its initial basis and how often it grew */
+    gal_rom_event growth[GAL_ROM_EVENTS_MAX];
 } gal_run_counters;
 
 typedef struct gal_integrator_type {

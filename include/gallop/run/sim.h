@@ -31,6 +31,8 @@ typedef struct gal_sim_result {
     int checked;                   /* recomputed reduced model: self-checked (residual_max, valid) */
     double residual_max;
     int valid;
+    int basis_start, growths;      /* recomputed reduced model: the initial basis, its growths */
+    gal_rom_event growth[GAL_ROM_EVENTS_MAX];
 } gal_sim_result;
 
 /* The run controls of a scene's [simulation]. */

@@ -1,0 +1,68 @@
+/* rom_adapt.h: the recomputed reduced model's adaptation (issue 13): where its self-check
+ * (gal_rom_residual) passes the tolerance, the basis grows: the residual's own correction
+ * direction du = K0^-1 R at the failing state and the next computed mode of the family whose
+ * residual is largest (with its modal derivatives); a new gal_rom is allocated on the larger basis
+ * (gal_rom_alloc, so that whatever it builds is rebuilt) and started from the old one's
+ * reconstructed full state. Each growth is logged (time, basis, family, what was added). */
+#ifndef GALLOP_ROM_ADAPT_H
+#define GALLOP_ROM_ADAPT_H
+
+#include "gallop/reduced/rom.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GAL_ROM_EVENTS_MAX 8 /* growths of one run, at most */
+#define GAL_ROM_MODES_MAX 24  /* modes in an adapted basis, at most (with their derivatives) */
+#define GAL_ROM_BASIS_CAP 90 /* basis vectors of an adapted basis, at most */
+
+enum { GAL_ROM_ADD_CORRECTION = 1, GAL_ROM_ADD_MODE = 2 };
+
+typedef struct gal_rom_event {
+    double t_s;             /* s: simulated time of the failing check */
+    double residual;        /* its residual (gal_rom_check.max) */
+    gal_family family;      /* the family whose residual was largest */
+    int basis_before, basis_after;
+    int mode_added;         /* index in a->md (the model's modes, or own) of the mode added, or -1 */
+    double mode_added_hz;   /* its frequency (0 when none) */
+    int corrections;        /* correction directions added (0 or 1) */
+} gal_rom_event;
+
+typedef struct gal_rom_adapt {
+    const gal_rod *rod;
+    const double *q_eq;
+    const gal_modes *md;    /* the model's modes, or own once more were computed */
+    gal_modes own;          /* more modes of a family, computed when the basis needs one that the
+                             * model's stage did not compute (gal_modes_find computes only the
+                             * modes asked for) */
+    gal_rom_opts o;
+    gal_force force;
+    int policy;             /* GAL_ROM_ADD_* bits; default both */
+    int relax;              /* 1 (default): the new stiff directions start quasi-static */
+    int sel[GAL_ROM_MODES_MAX], nsel;
+    double *extra;          /* ndof x nextra: the correction directions so far */
+    int nextra;
+    int nevents;
+    gal_rom_event ev[GAL_ROM_EVENTS_MAX];
+} gal_rom_adapt;
+
+/* The adaptation's set-up from the model's (the same arguments as gal_rom_alloc, copied; rod,
+ * q_eq, md and o's damping must outlive it) and the model on the initial basis into *m. */
+int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const double *q_eq, const gal_modes *md,
+                       const int *sel, int nsel, const gal_rom_opts *o, const gal_force *force);
+void gal_rom_adapt_clear(gal_rom_adapt *a);
+
+/* Grow the basis of *m after the check chk (du: its correction direction, ndof) failed at the
+ * state of *m: *m is replaced by the model on the larger basis, started at the same time from the
+ * same reconstructed state, counters carried over. GAL_OK when it grew; GAL_ELIMIT (nothing
+ * changed, with a message saying what reached its bound) when it cannot grow; another status on
+ * failure. */
+#define GAL_ROM_ELIMIT 1 /* positive: not an error of the computation */
+int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, const double *du);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

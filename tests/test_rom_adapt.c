@@ -1,0 +1,96 @@
+/* test_rom_adapt.c: the reduced model's adaptation (rom_adapt.h): a growth keeps the state (the
+ * new model starts from the old one's reconstructed rod, unchanged), logs what it added and when,
+ * carries the counters; the stiff new directions start quasi-static (their reduced force balanced);
+ * a basis that cannot grow says what reached its bound and leaves the model as it was. */
+#include "check.h"
+#include "gallop.h"
+#include "gallop/modes/modes.h"
+#include "gallop/reduced/rom_adapt.h"
+#include "gallop/statics/statics.h"
+
+static const gal_rod_params sagged = {.length = 150, .elements = 24, .EA = 3e7, .EI = 30, .GJ = 200, .mass = 1.6,
+                                      .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
+
+static double maxdiff(const double *a, const double *b, int n, double *scale)
+{
+    double e = 0;
+    *scale = 0;
+    for (int k = 0; k < n; k++) e = fmax(e, fabs(a[k] - b[k])), *scale = fmax(*scale, fabs(b[k]));
+    return e;
+}
+
+static void test_grow(void)
+{
+    gal_equilibrium eq = {0};
+    gal_modes md = {0};
+    int want[4] = {2, 1, 1, 0};
+    if (gal_statics_solve(&sagged, GAL_BY_SAG, 4.0, NULL, &eq) || gal_modes_find(eq.rod, eq.q, want, 40, &md)) {
+        CHECK(0, "%s", gal_error_message());
+        return;
+    }
+    int sel[8], ns = 0;
+    for (int k = 0; k < md.n && ns < 8; k++)
+        if (md.mode[k].selected) sel[ns++] = k;
+    gal_rom_opts o;
+    gal_rom_default_opts(&o);
+    o.h = 0.02;
+    gal_rom_adapt a;
+    gal_rom *m;
+    CHECK(gal_rom_adapt_init(&a, &m, eq.rod, eq.q, &md, sel, ns, &o, NULL) == GAL_OK, "%s", gal_error_message());
+    if (!m) { gal_rom_adapt_clear(&a); gal_modes_clear(&md); gal_equilibrium_clear(&eq); return; }
+    int nq = m->nq, n = m->ndof, r0 = m->r;
+    double *q = malloc(2 * (size_t)nq * sizeof(double)), *q1 = q + nq, *du = malloc((size_t)n * sizeof(double));
+    /* a large symmetric vertical motion, some steps on */
+    m->x[0] = 0.5 * sqrt(sagged.mass * sagged.length), m->x[1] = 0.3 * sqrt(sagged.mass * sagged.length);
+    gal_rom_reconstruct(m, q, NULL);
+    CHECK(gal_rom_start(m, 0, q, NULL) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_rom_advance(m, 0.5) == GAL_OK, "%s", gal_error_message());
+    gal_rom_check chk;
+    CHECK(gal_rom_residual_dir(m, &chk, du) == GAL_OK, "%s", gal_error_message());
+    CHECK(chk.max > 0, "a residual");
+    gal_rom_reconstruct(m, q, NULL);
+    double t = m->t, sc;
+    long steps = m->steps;
+    /* growth without the relaxation: the same rod, a larger basis, the event logged */
+    a.relax = 0;
+    CHECK(gal_rom_adapt_grow(&a, &m, &chk, du) == GAL_OK, "%s", gal_error_message());
+    gal_rom_reconstruct(m, q1, NULL);
+    double e = maxdiff(q1, q, nq, &sc);
+    CHECK(e <= 1e-10 * sc, "the state moved by %g of %g at the growth", e, sc);
+    CHECK(m->r > r0 && m->t == t && m->steps == steps, "basis %d -> %d, t %g, steps %ld", r0, m->r, m->t, m->steps);
+    CHECK(a.nevents == 1 && a.ev[0].basis_before == r0 && a.ev[0].basis_after == m->r && a.ev[0].t_s == t &&
+              a.ev[0].corrections == 1 && a.ev[0].mode_added >= 0,
+          "event: %d, %d -> %d at %g s, mode %d", a.nevents, a.ev[0].basis_before, a.ev[0].basis_after, a.ev[0].t_s,
+          a.ev[0].mode_added);
+    CHECK(a.md->mode[a.ev[0].mode_added].family == (a.ev[0].family == GAL_FAMILY_AXIAL ? GAL_FAMILY_VERTICAL : a.ev[0].family),
+          "the mode added is of the family of the largest residual");
+    /* with the relaxation: the new stiff direction's reduced force balanced, the old coordinates'
+     * projection of the rod kept to the relaxation's size */
+    CHECK(gal_rom_residual_dir(m, &chk, du) == GAL_OK, "%s", gal_error_message());
+    int r1 = m->r;
+    a.relax = 1, a.policy = GAL_ROM_ADD_CORRECTION;
+    CHECK(gal_rom_adapt_grow(&a, &m, &chk, du) == GAL_OK, "%s", gal_error_message());
+    CHECK(m->r == r1 + 1 && a.nevents == 2 && a.ev[1].mode_added == -1, "basis %d -> %d", r1, m->r);
+    double an = 0, amax = 0;
+    for (int k = 0; k < m->r; k++) amax = fmax(amax, fabs(m->a[k]));
+    an = fabs(m->a[m->r - 1]);
+    CHECK(an <= 1e-6 * amax, "the relaxed direction's acceleration %g of %g", an, amax);
+    /* nothing to add: the model unchanged, the bound named */
+    gal_rom *before = m;
+    a.policy = 0;
+    CHECK(gal_rom_adapt_grow(&a, &m, &chk, du) == GAL_ROM_ELIMIT, "cannot grow");
+    CHECK(m == before && a.nevents == 2, "unchanged");
+    CHECK(strstr(gal_error_message(), "basis grew to") != NULL, "%s", gal_error_message());
+    free(q);
+    free(du);
+    gal_rom_free(m);
+    gal_rom_adapt_clear(&a);
+    gal_modes_clear(&md);
+    gal_equilibrium_clear(&eq);
+}
+
+int main(void)
+{
+    RUN(test_grow);
+    return CHECK_SUMMARY();
+}
