@@ -222,12 +222,11 @@ static void follow(work *w, const gal_rod *rod, const double *q, gal_onset *out,
 static void conclude(gal_onset *out)
 {
     int nm = out->nmodes;
-    out->onset_speed = out->divergence_speed = out->fold_speed = NAN;
+    out->onset_speed = out->divergence_speed = NAN;
     out->onset_mode = -1;
     for (int i = 0; i < out->nspeed; i++) {
         const gal_onset_speed *s1 = out->sp + i, *s0 = i > 0 ? s1 - 1 : NULL;
         if (!s1->ok) continue;
-        if (s1->fold && isnan(out->fold_speed) && s0) out->fold_speed = 0.5 * (s0->speed + s1->speed);
         if (isnan(out->divergence_speed) && s0 && s0->ok && s0->kt_min > 0 && s1->kt_min <= 0)
             out->divergence_speed = s0->speed + (s1->speed - s0->speed) * s0->kt_min / (s0->kt_min - s1->kt_min);
         for (int k = 0; k < nm; k++) {
@@ -246,30 +245,6 @@ static void conclude(gal_onset *out)
             }
         }
     }
-}
-
-/* The static solution at speed U from the previous one (w->q); the fold test against the last
- * change of the path. */
-static int static_at(work *w, const gal_rod *rod, const double *q_eq, gal_loads *Ls, double tol, gal_onset_speed *sp,
-                     double *last_jump)
-{
-    memcpy(w->qprev, w->q, (size_t)w->nq * sizeof(double));
-    int it = 0, st = GAL_OK;
-    if (sp->speed > 0) st = gal_loads_static(rod, w->q, Ls, tol, 200, &it);
-    else memcpy(w->q, q_eq, (size_t)w->nq * sizeof(double));
-    if (st) {
-        memcpy(w->q, w->qprev, (size_t)w->nq * sizeof(double));
-        return st;
-    }
-    double sw = sp[-1].swing_deg, tw = sp[-1].twist_deg; /* sp[-1]: the previous speed, or a zero row */
-    int had = sp[-1].ok;
-    measures(rod, w->q, Ls, sp);
-    if (had) {
-        double jump = fmax(fabs(sp->swing_deg - sw), fabs(sp->twist_deg - tw));
-        sp->fold = jump > 5 && jump > 4 * *last_jump + 1;
-        *last_jump = jump;
-    }
-    return GAL_OK;
 }
 
 int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L, const gal_damping *C, double mass,
@@ -295,28 +270,34 @@ int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L
     if (!st && (!out->sp || !out->m)) st = gal_error(GAL_ENOMEM, "onset: out of memory");
     gal_loads Ls = *L;
     Ls.u = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0, Ls.rod = rod;
-    double H = 0, last_jump = 0;
+    double H = 0, *u = NULL, *Q = NULL;
+    int *ok = NULL, *fold = NULL;
     if (!st) {
         double *g = calloc((size_t)rod->nq, sizeof(double));
         if (g && !gal_rod_eval(rod, q_eq, NULL, g, NULL)) H = fabs(g[0]);
         free(g);
-        memcpy(w.q, q_eq, (size_t)rod->nq * sizeof(double));
+        u = malloc((size_t)out->nspeed * sizeof(double));
+        Q = malloc((size_t)out->nspeed * rod->nq * sizeof(double));
+        ok = malloc(2 * (size_t)out->nspeed * sizeof(int));
+        if (!u || !Q || !ok) st = gal_error(GAL_ENOMEM, "onset: out of memory for %d speeds", out->nspeed);
+        else fold = ok + out->nspeed;
     }
     double tol = o->static_tol > 0 ? o->static_tol : 1e-6 * fmax(H, 1.0) / rod->p.elements;
+    for (int i = 0; !st && i < out->nspeed; i++) u[i] = o->speed_min + i * o->speed_step;
+    if (!st) st = gal_onset_static_path(rod, q_eq, &Ls, tol, out->nspeed, u, Q, ok, fold, &out->fold_speed);
     for (int i = 0; i < out->nspeed && !st; i++) {
         gal_onset_speed *sp = out->sp + 1 + i;
-        sp->speed = Ls.speed = o->speed_min + i * o->speed_step;
-        int ss = static_at(&w, rod, q_eq, &Ls, tol, sp, &last_jump);
-        if (ss) {
-            if (i == 0) st = gal_error(ss, "onset: no equilibrium under the mean wind at %.4g m/s: %s", sp->speed,
-                                       gal_error_message());
-            continue;
-        }
+        sp->speed = Ls.speed = u[i];
+        if (!ok[i]) continue;
+        memcpy(w.q, Q + (size_t)i * rod->nq, (size_t)rod->nq * sizeof(double));
+        measures(rod, w.q, &Ls, sp);
+        sp->fold = fold[i];
         st = basis_at(&w, rod, w.q, &Ls, C, mass, o->families, sp);
         if (!st) st = linearize(&w, rod, w.q, &Ls, C, sp);
         if (!st) follow(&w, rod, w.q, out, i);
         sp->ok = !st;
     }
+    free(u); free(Q); free(ok);
     if (out->sp) memmove(out->sp, out->sp + 1, (size_t)out->nspeed * sizeof *out->sp);
     work_free(&w);
     if (st) { gal_onset_clear(out); return st; }
@@ -325,7 +306,9 @@ int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L
             out->sp[i].swing_deg = out->sp[i].twist_deg = out->sp[i].alpha_deg = NAN;
             for (int k = 0; k < nm; k++) out->m[(size_t)i * nm + k].damping_ratio = NAN;
         }
+    double fs = out->fold_speed;
     conclude(out);
+    out->fold_speed = fs;
     out->wall_time_s = gal_wall_time() - t0;
     return GAL_OK;
 }
