@@ -5,6 +5,7 @@
 #include "onset_internal.h"
 #include "gallop/base/core.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,7 +19,7 @@ typedef struct {
     int *Ti, *Tj, *Ap, *Ai, *Map;
     double *Tx, *Ax, *g, *f, *v, *r, *ru, *a, *b, *qt;
     void *sym, *num;
-    double tol;
+    double tol, fmax; /* N: the force tolerance asked for; the largest aerodynamic load of the last residual */
 } path_ws;
 
 static void ws_free(path_ws *w)
@@ -59,9 +60,11 @@ static int residual(path_ws *w, double *q, double U, int jac)
     int st = gal_rod_eval(rod, q, NULL, w->g, jac ? w->K : NULL);
     if (!st && U > 0) st = gal_loads_full(&w->L, 0.0, q, w->v, w->f);
     if (st) return st;
+    w->fmax = 0;
     for (int j = 0; j < w->n; j++) {
         int k = rod->free_q[j];
         w->r[j] = w->g[k] - w->f[k], w->ru[j] = U > 0 ? -2 * w->f[k] / U : 0;
+        w->fmax = fmax(w->fmax, fabs(w->f[k]));
     }
     if (!jac) return GAL_OK;
     int t = 0;
@@ -113,6 +116,15 @@ static int solve(path_ws *w, const double *rhs, double *x)
     return umfpack_di_solve(UMFPACK_A, w->Ap, w->Ai, w->Ax, x, rhs, w->num, NULL, NULL) == UMFPACK_OK ? GAL_OK : GAL_EFAIL;
 }
 
+/* Converged: the residual below the tolerance asked for and below 1e-6 of the aerodynamic load (a
+ * light wind's load is far below a tolerance scaled on the tension) or 1e-4 of the tolerance,
+ * and never below the round-off of the rod's forces (1e3 eps EA). */
+static int converged(const path_ws *w, double rn)
+{
+    double noise = 1e3 * DBL_EPSILON * w->rod->p.EA;
+    return rn <= fmax(noise, fmin(w->tol, fmax(1e-6 * w->fmax, 1e-4 * w->tol)));
+}
+
 static double norm_inf(const double *x, int n)
 {
     double m = 0;
@@ -129,7 +141,7 @@ static int newton_at(path_ws *w, double *q, double U, int max_iter)
         if (st) return st;
         double rn = norm_inf(w->r, w->n);
         if (!isfinite(rn)) return GAL_EFAIL;
-        if (rn <= w->tol) return GAL_OK;
+        if (converged(w, rn)) return GAL_OK;
         if (it >= max_iter || factor(w) || solve(w, w->r, w->a)) return GAL_EFAIL;
         int done = 0;
         for (double s = 1; s > 1e-3 && !done; s *= 0.5) {
@@ -172,7 +184,7 @@ static int arc_step(path_ws *w, const double *q0, double U0, const double *t, do
         if (*U < -1 || residual(w, q, fmax(*U, 0), 1)) return GAL_EFAIL;
         double c = (*U - U0) * t[n] - ds;
         for (int j = 0; j < n; j++) c += (q[rod->free_q[j]] - q0[rod->free_q[j]]) * t[j];
-        if (norm_inf(w->r, n) <= w->tol && fabs(c) <= 1e-9 * ds) { *iters = it; return GAL_OK; }
+        if (converged(w, norm_inf(w->r, n)) && fabs(c) <= 1e-9 * ds) { *iters = it; return GAL_OK; }
         if (factor(w) || solve(w, w->r, w->a)) return GAL_EFAIL;
         for (int j = 0; j < n; j++) w->qt[j] = -w->ru[j]; /* qt: scratch of n */
         if (solve(w, w->qt, w->b)) return GAL_EFAIL;
@@ -228,7 +240,7 @@ int gal_onset_static_path(const gal_rod *rod, const double *q_eq, const gal_load
         if (!st) st = factor(&w);
         if (!st) st = tangent(&w, NULL, t0);
     }
-    double U0 = 0, U1, span = u[ns - 1] - u[0], hmax = fmax(span / 40, 1e-3), ds = fmin(hmax, fmax(u[0], hmax));
+    double U0 = 0, U1, span = u[ns - 1], hmax = fmax(span / 40, 1e-3), ds = fmin(hmax, fmax(u[0], hmax));
     for (int i = 0; i < ns && u[i] <= 0; i++) { /* speeds of 0: the no-wind equilibrium */
         memcpy(Q + (size_t)i * nq, q_eq, (size_t)nq * sizeof(double));
         ok[i] = 1, o.gi = i + 1;
