@@ -115,6 +115,15 @@ static int basis_at(work *w, const gal_rod *rod, const double *q, const gal_load
             sp->den_hartog_onset = gal_stability_onset(L->table, a, mass, sp->zeta_vertical, md.mode[j].omega, L->rho, L->diam);
             break;
         }
+    sp->zeta_torsional = NAN, sp->nigol_onset = NAN;
+    for (int j = 0; j < md.n && rod->p.torsion; j++)
+        if (md.mode[j].family == GAL_FAMILY_TORSIONAL) {
+            int e = rod->p.elements / 2;
+            double I = rod->edge_inertia[e] / rod->l0[e], wt = md.mode[j].omega;
+            sp->zeta_torsional = gal_damping_ratio(C, md.shape + (size_t)j * n, wt);
+            sp->nigol_onset = gal_stability_nigol_onset(sp->nigol_dcm, I, wt, sp->zeta_torsional, L->rho, L->diam);
+            break;
+        }
     gal_modes_clear(&md);
     if (k < w->nb) return gal_error(GAL_EFAIL, "onset: %d of the %d basis modes of the families asked for among %d modes",
                                     k, w->nb, w->nev);
@@ -143,6 +152,19 @@ static int linearize(work *w, const gal_rod *rod, const double *q, const gal_loa
         if (fabs(w->wi[j]) <= 1e-9 * fabs(w->wr[j])) kr = fmin(kr, w->wr[j]);
     }
     sp->kt_min = isfinite(kr) ? kr : ka;
+    /* the linear divergence speed about this configuration: K_t = diag(w^2) + (U'/U)^2 Ka is
+     * singular where 1/U'^2 is a real eigenvalue of -diag(w^-2) Ka / U^2 */
+    sp->divergence_linear = INFINITY;
+    if (sp->speed > 0) {
+        double u2 = sp->speed * sp->speed, nu = 0;
+        for (int j = 0; j < nb; j++)
+            for (int i = 0; i < nb; i++) w->A[i + (size_t)j * nb] = -w->Ka[i + (size_t)j * nb] / (w->omega[i] * w->omega[i] * u2);
+        dgeev_("N", "N", &nb, w->A, &nb, w->wr, w->wi, &dummy, &one, &dummy, &one, w->work, &w->lwork, &info);
+        if (info) return gal_error(GAL_EFAIL, "onset: LAPACK dgeev failed (info %d) on the divergence problem", info);
+        for (int j = 0; j < nb; j++)
+            if (fabs(w->wi[j]) <= 1e-9 * fabs(w->wr[j])) nu = fmax(nu, w->wr[j]);
+        if (nu > 0) sp->divergence_linear = 1 / sqrt(nu);
+    }
     if ((st = gal_onset_state_eig(nb, w->Kt, w->Ct, w->A, w->wr, w->wi, w->VR, w->work, w->lwork))) return st;
     w->ncand = 0;
     for (int k = 0; k < w->N; k++) {
@@ -222,13 +244,24 @@ static void follow(work *w, const gal_rod *rod, const double *q, gal_onset *out,
 static void conclude(gal_onset *out)
 {
     int nm = out->nmodes;
-    out->onset_speed = out->divergence_speed = NAN;
+    out->onset_speed = out->divergence_speed = out->restable_speed = NAN;
     out->onset_mode = -1;
+    double zprev = NAN, uprev = NAN; /* the least damping ratio over the modes at the last speed solved */
     for (int i = 0; i < out->nspeed; i++) {
         const gal_onset_speed *s1 = out->sp + i, *s0 = i > 0 ? s1 - 1 : NULL;
         if (!s1->ok) continue;
-        if (isnan(out->divergence_speed) && s0 && s0->ok && s0->kt_min > 0 && s1->kt_min <= 0)
-            out->divergence_speed = s0->speed + (s1->speed - s0->speed) * s0->kt_min / (s0->kt_min - s1->kt_min);
+        if (isnan(out->divergence_speed) && s0 && s0->ok && s0->kt_min > 0 && s1->kt_min <= 0) {
+            /* the linear estimate about the last stable configuration when it falls in the bracket
+             * (exact on a path that does not move), else the interpolated kt_min */
+            double ud = s0->divergence_linear;
+            out->divergence_speed = ud >= s0->speed && ud <= s1->speed ? ud
+                : s0->speed + (s1->speed - s0->speed) * s0->kt_min / (s0->kt_min - s1->kt_min);
+        }
+        double z = INFINITY;
+        for (int k = 0; k < nm; k++) z = fmin(z, out->m[(size_t)i * nm + k].damping_ratio);
+        if (z <= 0) out->restable_speed = NAN;
+        else if (zprev <= 0) out->restable_speed = uprev + (s1->speed - uprev) * zprev / (zprev - z);
+        zprev = z, uprev = s1->speed;
         for (int k = 0; k < nm; k++) {
             const gal_onset_mode *m1 = out->m + (size_t)i * nm + k, *m0 = i > 0 ? m1 - nm : NULL;
             if (!(m1->damping_ratio <= 0) || !(m1->frequency_hz > 0)) continue;
