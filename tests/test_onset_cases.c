@@ -120,7 +120,9 @@ static void test_condor_twisted(void)
            "%.1f deg, alpha %.1f deg, H %.3f)\n", lo->den_hartog_onset, r.onset_speed, ur, hi->speed, hi->twist_deg,
            hi->alpha_deg, hi->den_hartog);
     CHECK_NEAR(lo->den_hartog_onset, 1.9, 0.05);
-    CHECK_REL(r.onset_speed, lo->den_hartog_onset, 0.03); /* little twist at that speed */
+    /* little twist at that speed: Den Hartog's, to 0.3% (1.8% high when the basis lacked the
+     * antisymmetric torsional mode, the 34th natural mode of this span) */
+    CHECK_REL(r.onset_speed, lo->den_hartog_onset, 3e-3);
     CHECK(hi->twist_deg > 60 && hi->den_hartog > 0, "twist %.1f deg, H %.3f", hi->twist_deg, hi->den_hartog);
     CHECK(ur > 10 && ur < 18, "stable again above %.4g m/s", ur);
     gal_onset_clear(&r);

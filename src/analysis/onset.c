@@ -31,6 +31,7 @@ void gal_onset_clear(gal_onset *r)
 
 typedef struct {
     int n, nb, N, nm, lwork, nq, nev, ncand;
+    int ntors; /* torsional modes appended to the basis above its lowest nb - ntors modes */
     double *phi, *omega, *Ka, *Ca, *Cs, *Kt, *Ct, *A, *wr, *wi, *VR, *work;
     double *cre, *cim, *clr, *cli; /* candidates: physical shapes (n x N) and eigenvalues */
     double *pre, *pim, *pf;        /* followed modes at the previous speed: shapes, frequency */
@@ -102,8 +103,9 @@ static int basis_at(work *w, const gal_rod *rod, const double *q, const gal_load
     int st = gal_modes_solve(rod, q, w->nev, &md);
     if (st) return gal_error(st, "onset: modes at %.4g m/s: %s", sp->speed, gal_error_message());
     int k = 0, n = w->n;
-    for (int j = 0; j < md.n && k < w->nb; j++)
-        if (!fam || (fam >> md.mode[j].family & 1u)) {
+    for (int j = 0; j < md.n && k < w->nb; j++) /* the lowest nb - ntors, then the torsional ones above */
+        if ((!fam || (fam >> md.mode[j].family & 1u)) &&
+            (k < w->nb - w->ntors || md.mode[j].family == GAL_FAMILY_TORSIONAL)) {
             memcpy(w->phi + (size_t)k * n, md.shape + (size_t)j * n, (size_t)n * sizeof(double));
             w->omega[k++] = md.mode[j].omega;
         }
@@ -280,6 +282,30 @@ static void conclude(gal_onset *out)
     }
 }
 
+/* The torsional modes the basis needs above its lowest nb: the twist of a mode of either symmetry
+ * needs a torsional mode of that symmetry (a 450-m span's first antisymmetric torsional mode is its
+ * 34th: without it the antisymmetric vertical modes cannot twist, and the onset was 1.8% high).
+ * Out: *nt torsional modes to append (up to GAL_ONSET_TORSIONAL less those among the lowest nb),
+ * *nev the modes to solve for (their rank at no wind, with a margin for the shift under wind). */
+static int torsional_extension(const gal_rod *rod, const double *q_eq, const gal_onset_opts *o, int nb, int *nt, int *nev)
+{
+    *nt = 0;
+    if (!rod->p.torsion || (o->families && !(o->families >> GAL_FAMILY_TORSIONAL & 1u))) return GAL_OK;
+    int probe = 3 * nb + 40 < rod->ndof - 1 ? 3 * nb + 40 : rod->ndof - 1, last = -1;
+    gal_modes md;
+    int st = gal_modes_solve(rod, q_eq, probe, &md);
+    if (st) return gal_error(st, "onset: modes at no wind: %s", gal_error_message());
+    for (int j = 0, found = 0; j < md.n && found < GAL_ONSET_TORSIONAL; j++)
+        if (md.mode[j].family == GAL_FAMILY_TORSIONAL) {
+            found++, last = j;
+            if (j >= nb) ++*nt;
+        }
+    gal_modes_clear(&md);
+    int need = last + 11 < rod->ndof - 1 ? last + 11 : rod->ndof - 1;
+    if (*nt && need > *nev) *nev = need;
+    return GAL_OK;
+}
+
 int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L, const gal_damping *C, double mass,
                       const gal_onset_opts *o, gal_onset *out)
 {
@@ -293,9 +319,13 @@ int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L
     int nb = o->basis < rod->ndof - 1 ? o->basis : rod->ndof - 1, nm = o->nmodes < nb ? o->nmodes : nb;
     if (nb < 1 || nm < 1 || nm > 64) return gal_error(GAL_EINPUT, "onset: basis %d and modes followed %d: allowed "
                                                       "1 <= modes <= basis, modes <= 64", o->basis, o->nmodes);
+    int nt = 0, nev = o->families ? (3 * nb + 20 < rod->ndof - 1 ? 3 * nb + 20 : rod->ndof - 1) : nb;
+    int st = torsional_extension(rod, q_eq, o, nb, &nt, &nev);
     work w;
-    int st = work_alloc(&w, rod, nb, nm);
-    w.nev = o->families ? (3 * nb + 20 < rod->ndof - 1 ? 3 * nb + 20 : rod->ndof - 1) : nb;
+    if (!st) st = work_alloc(&w, rod, nb + nt, nm);
+    else memset(&w, 0, sizeof w);
+    w.nev = nev, w.ntors = nt;
+    nb += nt;
     out->nspeed = (int)floor((o->speed_max - o->speed_min) / o->speed_step + 1e-9) + 1;
     out->nmodes = nm, out->basis = nb, out->speed_max = o->speed_max;
     out->sp = calloc((size_t)out->nspeed + 1, sizeof *out->sp); /* row 0: before the first speed */

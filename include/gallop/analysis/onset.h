@@ -8,7 +8,8 @@
  *      apply), dF/dq and dF/dv the quasi-steady aerodynamic stiffness and damping, derivatives of
  *      gal_loads_full's element loads (central differences element by element: each element's load
  *      depends on its two nodes, its twist and its nodes' velocities only);
- *   3. projected on the lowest `basis` natural modes of (K(q), M) at that speed, the state matrix
+ *   3. projected on the lowest `basis` natural modes of (K(q), M) at that speed (with torsion, plus
+ *      the lowest GAL_ONSET_TORSIONAL torsional modes not among them), the state matrix
  *      [0 I; -K_t -C_t] and its eigenvalues (LAPACK dgeev): lambda = -zeta w +- i w sqrt(1-zeta^2).
  * The lowest `nmodes` aeroelastic modes at the first speed are followed over the speeds by
  * continuity (MAC of the physical shapes, less the relative frequency change). The onset is the
@@ -32,6 +33,8 @@ extern "C" {
 #define GAL_ONSET_SPEED_STEP 0.25
 #define GAL_ONSET_BASIS 30        /* natural modes in the basis (converged: see tests/test_onset.c) */
 #define GAL_ONSET_NMODES 8        /* aeroelastic modes followed */
+#define GAL_ONSET_TORSIONAL 4     /* torsional modes the basis holds at least (appended above the
+                                   * lowest `basis` when they are not among them) */
 
 typedef struct gal_onset_opts {
     double speed_min, speed_max, speed_step; /* m/s; speed_min may be 0 */
