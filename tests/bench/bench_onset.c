@@ -85,7 +85,7 @@ static void bracket(const char *name, const char *scene, const char *extra, cons
         int above = fk[k] > 1, unstable = g[k] > 0 || pp[k] > 0.1;
         ok &= (above == grows_above) == unstable;
     }
-    printf("BENCH|%s: %s predicted|%.4g|m/s|coupled analysis, 30 modes|\n", name, what, u);
+    printf("BENCH|%s: %s predicted|%.4g|m/s|coupled analysis (30 natural modes + the 4 lowest torsional)|\n", name, what, u);
     printf("BENCH|%s: full-model growth at 0.9 / 0.95 / 1.05 / 1.1 of it|%.2g / %.2g / %.2g / %.2g|1/s|%g-s runs, quarter span, "
            "%s; consistent with the prediction: %s|\n", name, g[0], g[1], g[2], g[3], duration,
            f > 0 ? "component at the onset frequency" : "window maxima", ok ? "yes" : "NO");
