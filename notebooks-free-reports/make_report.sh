@@ -206,6 +206,7 @@ for scene in "${scenes[@]}"; do
     [ -s "$notes" ] || rm -f "$notes"
     if bash "$here/plot_scene.sh" "$d" "$name"; then :; else status=1; fi
     if [ -s "$d/accuracy/front.csv" ]; then bash "$here/plot_front.sh" "$d/accuracy" "$d/report.md" || status=1; fi
+    bash "$here/plot_onset.sh" "$d" "$name" || status=1 # the classic criteria beside the coupled onset
     echo "  report: $d/report.md" >&2
     echo "- [$name]($name/report.md)" >> "$index"
 done

@@ -166,8 +166,24 @@ static void test_scene_params(void)
     CHECK(p.zeta == 0, "damping off: zeta %g", p.zeta);
 }
 
+/* Nigol's torsional onset: the total torsional damping ratio zeta + rho U d^2 R C_M' / (4 I w)
+ * vanishes there (R = d/2), by hand: C_M' = -0.5, I = 1e-3 kg m^2/m, 1 Hz, zeta = 0.01,
+ * rho = 1.2, d = 0.03: U_N = 4e-3 (2 pi) 0.01 / (1.2 9e-4 0.015 0.5) = 31.03 m/s; none for
+ * C_M' >= 0; it scales with zeta and 1/|C_M'|. */
+static void test_nigol(void)
+{
+    double w = 2 * GAL_PI, u = gal_stability_nigol_onset(-0.5, 1e-3, w, 0.01, 1.2, 0.03);
+    CHECK_REL(u, 4e-3 * w * 0.01 / (1.2 * 9e-4 * 0.015 * 0.5), 1e-12);
+    CHECK_NEAR(u, 31.03, 0.01);
+    CHECK_NEAR(0.01 + 1.2 * u * 9e-4 * 0.015 * -0.5 / (4 * 1e-3 * w), 0, 1e-12);
+    CHECK(isinf(gal_stability_nigol_onset(0.0, 1e-3, w, 0.01, 1.2, 0.03)), "dC_M/dalpha = 0: stable");
+    CHECK(isinf(gal_stability_nigol_onset(0.2, 1e-3, w, 0.01, 1.2, 0.03)), "dC_M/dalpha > 0: stable");
+    CHECK_REL(gal_stability_nigol_onset(-1.0, 1e-3, w, 0.02, 1.2, 0.03), u, 1e-12);
+}
+
 int main(void)
 {
+    RUN(test_nigol);
     RUN(test_sine_lift_two_ranges);
     RUN(test_sine_lift_one_range);
     RUN(test_cylinder_stable);

@@ -31,6 +31,7 @@ void gal_onset_clear(gal_onset *r)
 
 typedef struct {
     int n, nb, N, nm, lwork, nq, nev, ncand;
+    int ntors; /* torsional modes appended to the basis above its lowest nb - ntors modes */
     double *phi, *omega, *Ka, *Ca, *Cs, *Kt, *Ct, *A, *wr, *wi, *VR, *work;
     double *cre, *cim, *clr, *cli; /* candidates: physical shapes (n x N) and eigenvalues */
     double *pre, *pim, *pf;        /* followed modes at the previous speed: shapes, frequency */
@@ -102,8 +103,9 @@ static int basis_at(work *w, const gal_rod *rod, const double *q, const gal_load
     int st = gal_modes_solve(rod, q, w->nev, &md);
     if (st) return gal_error(st, "onset: modes at %.4g m/s: %s", sp->speed, gal_error_message());
     int k = 0, n = w->n;
-    for (int j = 0; j < md.n && k < w->nb; j++)
-        if (!fam || (fam >> md.mode[j].family & 1u)) {
+    for (int j = 0; j < md.n && k < w->nb; j++) /* the lowest nb - ntors, then the torsional ones above */
+        if ((!fam || (fam >> md.mode[j].family & 1u)) &&
+            (k < w->nb - w->ntors || md.mode[j].family == GAL_FAMILY_TORSIONAL)) {
             memcpy(w->phi + (size_t)k * n, md.shape + (size_t)j * n, (size_t)n * sizeof(double));
             w->omega[k++] = md.mode[j].omega;
         }
@@ -113,6 +115,15 @@ static int basis_at(work *w, const gal_rod *rod, const double *q, const gal_load
             sp->zeta_vertical = gal_damping_ratio(C, md.shape + (size_t)j * n, md.mode[j].omega);
             double a = sp->alpha_deg / DEG;
             sp->den_hartog_onset = gal_stability_onset(L->table, a, mass, sp->zeta_vertical, md.mode[j].omega, L->rho, L->diam);
+            break;
+        }
+    sp->zeta_torsional = NAN, sp->nigol_onset = NAN;
+    for (int j = 0; j < md.n && rod->p.torsion; j++)
+        if (md.mode[j].family == GAL_FAMILY_TORSIONAL) {
+            int e = rod->p.elements / 2;
+            double I = rod->edge_inertia[e] / rod->l0[e], wt = md.mode[j].omega;
+            sp->zeta_torsional = gal_damping_ratio(C, md.shape + (size_t)j * n, wt);
+            sp->nigol_onset = gal_stability_nigol_onset(sp->nigol_dcm, I, wt, sp->zeta_torsional, L->rho, L->diam);
             break;
         }
     gal_modes_clear(&md);
@@ -143,6 +154,19 @@ static int linearize(work *w, const gal_rod *rod, const double *q, const gal_loa
         if (fabs(w->wi[j]) <= 1e-9 * fabs(w->wr[j])) kr = fmin(kr, w->wr[j]);
     }
     sp->kt_min = isfinite(kr) ? kr : ka;
+    /* the linear divergence speed about this configuration: K_t = diag(w^2) + (U'/U)^2 Ka is
+     * singular where 1/U'^2 is a real eigenvalue of -diag(w^-2) Ka / U^2 */
+    sp->divergence_linear = INFINITY;
+    if (sp->speed > 0) {
+        double u2 = sp->speed * sp->speed, nu = 0;
+        for (int j = 0; j < nb; j++)
+            for (int i = 0; i < nb; i++) w->A[i + (size_t)j * nb] = -w->Ka[i + (size_t)j * nb] / (w->omega[i] * w->omega[i] * u2);
+        dgeev_("N", "N", &nb, w->A, &nb, w->wr, w->wi, &dummy, &one, &dummy, &one, w->work, &w->lwork, &info);
+        if (info) return gal_error(GAL_EFAIL, "onset: LAPACK dgeev failed (info %d) on the divergence problem", info);
+        for (int j = 0; j < nb; j++)
+            if (fabs(w->wi[j]) <= 1e-9 * fabs(w->wr[j])) nu = fmax(nu, w->wr[j]);
+        if (nu > 0) sp->divergence_linear = 1 / sqrt(nu);
+    }
     if ((st = gal_onset_state_eig(nb, w->Kt, w->Ct, w->A, w->wr, w->wi, w->VR, w->work, w->lwork))) return st;
     w->ncand = 0;
     for (int k = 0; k < w->N; k++) {
@@ -222,14 +246,24 @@ static void follow(work *w, const gal_rod *rod, const double *q, gal_onset *out,
 static void conclude(gal_onset *out)
 {
     int nm = out->nmodes;
-    out->onset_speed = out->divergence_speed = out->fold_speed = NAN;
+    out->onset_speed = out->divergence_speed = out->restable_speed = NAN;
     out->onset_mode = -1;
+    double zprev = NAN, uprev = NAN; /* the least damping ratio over the modes at the last speed solved */
     for (int i = 0; i < out->nspeed; i++) {
         const gal_onset_speed *s1 = out->sp + i, *s0 = i > 0 ? s1 - 1 : NULL;
         if (!s1->ok) continue;
-        if (s1->fold && isnan(out->fold_speed) && s0) out->fold_speed = 0.5 * (s0->speed + s1->speed);
-        if (isnan(out->divergence_speed) && s0 && s0->ok && s0->kt_min > 0 && s1->kt_min <= 0)
-            out->divergence_speed = s0->speed + (s1->speed - s0->speed) * s0->kt_min / (s0->kt_min - s1->kt_min);
+        if (isnan(out->divergence_speed) && s0 && s0->ok && s0->kt_min > 0 && s1->kt_min <= 0) {
+            /* the linear estimate about the last stable configuration when it falls in the bracket
+             * (exact on a path that does not move), else the interpolated kt_min */
+            double ud = s0->divergence_linear;
+            out->divergence_speed = ud >= s0->speed && ud <= s1->speed ? ud
+                : s0->speed + (s1->speed - s0->speed) * s0->kt_min / (s0->kt_min - s1->kt_min);
+        }
+        double z = INFINITY;
+        for (int k = 0; k < nm; k++) z = fmin(z, out->m[(size_t)i * nm + k].damping_ratio);
+        if (z <= 0) out->restable_speed = NAN;
+        else if (zprev <= 0) out->restable_speed = uprev + (s1->speed - uprev) * zprev / (zprev - z);
+        zprev = z, uprev = s1->speed;
         for (int k = 0; k < nm; k++) {
             const gal_onset_mode *m1 = out->m + (size_t)i * nm + k, *m0 = i > 0 ? m1 - nm : NULL;
             if (!(m1->damping_ratio <= 0) || !(m1->frequency_hz > 0)) continue;
@@ -248,27 +282,27 @@ static void conclude(gal_onset *out)
     }
 }
 
-/* The static solution at speed U from the previous one (w->q); the fold test against the last
- * change of the path. */
-static int static_at(work *w, const gal_rod *rod, const double *q_eq, gal_loads *Ls, double tol, gal_onset_speed *sp,
-                     double *last_jump)
+/* The torsional modes the basis needs above its lowest nb: the twist of a mode of either symmetry
+ * needs a torsional mode of that symmetry (a 450-m span's first antisymmetric torsional mode is its
+ * 34th: without it the antisymmetric vertical modes cannot twist, and the onset was 1.8% high).
+ * Out: *nt torsional modes to append (up to GAL_ONSET_TORSIONAL less those among the lowest nb),
+ * *nev the modes to solve for (their rank at no wind, with a margin for the shift under wind). */
+static int torsional_extension(const gal_rod *rod, const double *q_eq, const gal_onset_opts *o, int nb, int *nt, int *nev)
 {
-    memcpy(w->qprev, w->q, (size_t)w->nq * sizeof(double));
-    int it = 0, st = GAL_OK;
-    if (sp->speed > 0) st = gal_loads_static(rod, w->q, Ls, tol, 200, &it);
-    else memcpy(w->q, q_eq, (size_t)w->nq * sizeof(double));
-    if (st) {
-        memcpy(w->q, w->qprev, (size_t)w->nq * sizeof(double));
-        return st;
-    }
-    double sw = sp[-1].swing_deg, tw = sp[-1].twist_deg; /* sp[-1]: the previous speed, or a zero row */
-    int had = sp[-1].ok;
-    measures(rod, w->q, Ls, sp);
-    if (had) {
-        double jump = fmax(fabs(sp->swing_deg - sw), fabs(sp->twist_deg - tw));
-        sp->fold = jump > 5 && jump > 4 * *last_jump + 1;
-        *last_jump = jump;
-    }
+    *nt = 0;
+    if (!rod->p.torsion || (o->families && !(o->families >> GAL_FAMILY_TORSIONAL & 1u))) return GAL_OK;
+    int probe = 3 * nb + 40 < rod->ndof - 1 ? 3 * nb + 40 : rod->ndof - 1, last = -1;
+    gal_modes md;
+    int st = gal_modes_solve(rod, q_eq, probe, &md);
+    if (st) return gal_error(st, "onset: modes at no wind: %s", gal_error_message());
+    for (int j = 0, found = 0; j < md.n && found < GAL_ONSET_TORSIONAL; j++)
+        if (md.mode[j].family == GAL_FAMILY_TORSIONAL) {
+            found++, last = j;
+            if (j >= nb) ++*nt;
+        }
+    gal_modes_clear(&md);
+    int need = last + 11 < rod->ndof - 1 ? last + 11 : rod->ndof - 1;
+    if (*nt && need > *nev) *nev = need;
     return GAL_OK;
 }
 
@@ -285,9 +319,13 @@ int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L
     int nb = o->basis < rod->ndof - 1 ? o->basis : rod->ndof - 1, nm = o->nmodes < nb ? o->nmodes : nb;
     if (nb < 1 || nm < 1 || nm > 64) return gal_error(GAL_EINPUT, "onset: basis %d and modes followed %d: allowed "
                                                       "1 <= modes <= basis, modes <= 64", o->basis, o->nmodes);
+    int nt = 0, nev = o->families ? (3 * nb + 20 < rod->ndof - 1 ? 3 * nb + 20 : rod->ndof - 1) : nb;
+    int st = torsional_extension(rod, q_eq, o, nb, &nt, &nev);
     work w;
-    int st = work_alloc(&w, rod, nb, nm);
-    w.nev = o->families ? (3 * nb + 20 < rod->ndof - 1 ? 3 * nb + 20 : rod->ndof - 1) : nb;
+    if (!st) st = work_alloc(&w, rod, nb + nt, nm);
+    else memset(&w, 0, sizeof w);
+    w.nev = nev, w.ntors = nt;
+    nb += nt;
     out->nspeed = (int)floor((o->speed_max - o->speed_min) / o->speed_step + 1e-9) + 1;
     out->nmodes = nm, out->basis = nb, out->speed_max = o->speed_max;
     out->sp = calloc((size_t)out->nspeed + 1, sizeof *out->sp); /* row 0: before the first speed */
@@ -295,28 +333,34 @@ int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L
     if (!st && (!out->sp || !out->m)) st = gal_error(GAL_ENOMEM, "onset: out of memory");
     gal_loads Ls = *L;
     Ls.u = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0, Ls.rod = rod;
-    double H = 0, last_jump = 0;
+    double H = 0, *u = NULL, *Q = NULL;
+    int *ok = NULL, *fold = NULL;
     if (!st) {
         double *g = calloc((size_t)rod->nq, sizeof(double));
         if (g && !gal_rod_eval(rod, q_eq, NULL, g, NULL)) H = fabs(g[0]);
         free(g);
-        memcpy(w.q, q_eq, (size_t)rod->nq * sizeof(double));
+        u = malloc((size_t)out->nspeed * sizeof(double));
+        Q = malloc((size_t)out->nspeed * rod->nq * sizeof(double));
+        ok = malloc(2 * (size_t)out->nspeed * sizeof(int));
+        if (!u || !Q || !ok) st = gal_error(GAL_ENOMEM, "onset: out of memory for %d speeds", out->nspeed);
+        else fold = ok + out->nspeed;
     }
     double tol = o->static_tol > 0 ? o->static_tol : 1e-6 * fmax(H, 1.0) / rod->p.elements;
+    for (int i = 0; !st && i < out->nspeed; i++) u[i] = o->speed_min + i * o->speed_step;
+    if (!st) st = gal_onset_static_path(rod, q_eq, &Ls, tol, out->nspeed, u, Q, ok, fold, &out->fold_speed);
     for (int i = 0; i < out->nspeed && !st; i++) {
         gal_onset_speed *sp = out->sp + 1 + i;
-        sp->speed = Ls.speed = o->speed_min + i * o->speed_step;
-        int ss = static_at(&w, rod, q_eq, &Ls, tol, sp, &last_jump);
-        if (ss) {
-            if (i == 0) st = gal_error(ss, "onset: no equilibrium under the mean wind at %.4g m/s: %s", sp->speed,
-                                       gal_error_message());
-            continue;
-        }
+        sp->speed = Ls.speed = u[i];
+        if (!ok[i]) continue;
+        memcpy(w.q, Q + (size_t)i * rod->nq, (size_t)rod->nq * sizeof(double));
+        measures(rod, w.q, &Ls, sp);
+        sp->fold = fold[i];
         st = basis_at(&w, rod, w.q, &Ls, C, mass, o->families, sp);
         if (!st) st = linearize(&w, rod, w.q, &Ls, C, sp);
         if (!st) follow(&w, rod, w.q, out, i);
         sp->ok = !st;
     }
+    free(u); free(Q); free(ok);
     if (out->sp) memmove(out->sp, out->sp + 1, (size_t)out->nspeed * sizeof *out->sp);
     work_free(&w);
     if (st) { gal_onset_clear(out); return st; }
@@ -325,7 +369,9 @@ int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L
             out->sp[i].swing_deg = out->sp[i].twist_deg = out->sp[i].alpha_deg = NAN;
             for (int k = 0; k < nm; k++) out->m[(size_t)i * nm + k].damping_ratio = NAN;
         }
+    double fs = out->fold_speed;
     conclude(out);
+    out->fold_speed = fs;
     out->wall_time_s = gal_wall_time() - t0;
     return GAL_OK;
 }

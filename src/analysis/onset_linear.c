@@ -11,7 +11,7 @@
 
 /* The generalized loads of element j (gal_loads_full's distribution): g[0..2] on node j,
  * g[3..5] on node j+1, g[6] on the element's twist. */
-static int elem_load(const gal_loads *L, const gal_rod *rod, const double *q, const double *v, int j, double g[7])
+int gal_onset_elem_load(const gal_loads *L, const gal_rod *rod, const double *q, const double *v, int j, double g[7])
 {
     double r[3], rd[3], tg[3], d1[3], fe[3] = {0, 0, 0}, me = 0;
     for (int k = 0; k < 3; k++) {
@@ -28,14 +28,14 @@ static int elem_load(const gal_loads *L, const gal_rod *rod, const double *q, co
 }
 
 /* Central difference of element j's loads with respect to entry x[idx] (step h): column col of J. */
-static int elem_column(const gal_loads *L, const gal_rod *rod, double *q, double *v, int j, double *x, int idx,
+int gal_onset_elem_column(const gal_loads *L, const gal_rod *rod, double *q, double *v, int j, double *x, int idx,
                        double h, double *col)
 {
     double x0 = x[idx], gp[7], gm[7];
     x[idx] = x0 + h;
-    int st = elem_load(L, rod, q, v, j, gp);
+    int st = gal_onset_elem_load(L, rod, q, v, j, gp);
     x[idx] = x0 - h;
-    if (!st) st = elem_load(L, rod, q, v, j, gm);
+    if (!st) st = gal_onset_elem_load(L, rod, q, v, j, gm);
     x[idx] = x0;
     if (st) return st;
     for (int r = 0; r < 7; r++) col[r] = (gp[r] - gm[r]) / (2 * h);
@@ -87,11 +87,11 @@ int gal_onset_aero_matrices(const gal_rod *rod, const double *q0, const gal_load
         double J[49];
         if (Ka) {
             for (int c = 0; c < nc && !st; c++)
-                st = elem_column(L, rod, q, v, j, q, qi[c], c < 6 ? hx : ht, J + 7 * c);
+                st = gal_onset_elem_column(L, rod, q, v, j, q, qi[c], c < 6 ? hx : ht, J + 7 * c);
             if (!st) project_add(n, P, J, nc, cmap, Ka, T);
         }
         if (Ca && L->aero_damping && !st) {
-            for (int c = 0; c < 6 && !st; c++) st = elem_column(L, rod, q, v, j, v, qi[c], hv, J + 7 * c);
+            for (int c = 0; c < 6 && !st; c++) st = gal_onset_elem_column(L, rod, q, v, j, v, qi[c], hv, J + 7 * c);
             if (!st) project_add(n, P, J, 6, cmap, Ca, T);
         }
     }

@@ -17,6 +17,12 @@ double gal_stability_onset(const gal_aero_table *t, double alpha, double mass, d
     return -4.0 * mass * zeta * omega / (rho * diam * H);
 }
 
+double gal_stability_nigol_onset(double dcm, double inertia, double omega, double zeta, double rho, double diam)
+{
+    if (!(dcm < 0)) return INFINITY;
+    return 4.0 * inertia * omega * zeta / (rho * diam * diam * GAL_NIGOL_ARM * diam * -dcm);
+}
+
 void gal_stability_scene_params(const gal_scene *sc, gal_stability_params *p)
 {
     p->mass = sc->conductor.mass_per_length + sc->ice.mass_per_length;

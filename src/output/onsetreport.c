@@ -19,14 +19,15 @@ int gal_onset_write_csv(const gal_onset *O, gal_outset *o)
     fprintf(fp, "# per wind speed: the mean-wind equilibrium at mid-span, the classic criteria there (Den Hartog"
                 " with the applied damping, Nigol), and each followed aeroelastic mode's frequency and damping ratio\n");
     fprintf(fp, "speed_m_s,static_ok,fold,swing_deg,twist_deg,alpha_deg,den_hartog,den_hartog_onset_m_s,"
-                "zeta_vertical,nigol_dcm_dalpha,kt_min_rad2_s2");
+                "zeta_vertical,nigol_dcm_dalpha,kt_min_rad2_s2,divergence_linear_m_s,zeta_torsional,nigol_onset_m_s");
     for (int k = 0; k < O->nmodes; k++) fprintf(fp, ",f%d_hz,zeta%d", k + 1, k + 1);
     fputc('\n', fp);
     for (int i = 0; i < O->nspeed; i++) {
         const gal_onset_speed *s = O->sp + i;
         fprintf(fp, "%.10g,%d,%d", s->speed, s->ok, s->fold);
         double v[] = {s->swing_deg, s->twist_deg, s->alpha_deg, s->den_hartog, s->den_hartog_onset,
-                      s->zeta_vertical, s->nigol_dcm, s->kt_min};
+                      s->zeta_vertical, s->nigol_dcm, s->kt_min, s->divergence_linear,
+                      s->zeta_torsional, s->nigol_onset};
         for (size_t c = 0; c < sizeof v / sizeof v[0]; c++) csv_num(fp, v[c]);
         for (int k = 0; k < O->nmodes; k++) {
             const gal_onset_mode *m = O->m + (size_t)i * O->nmodes + k;
@@ -55,6 +56,7 @@ void gal_onset_write_json(const gal_onset *O, gal_json *j)
         gal_json_obj_end(j);
     }
     gal_json_kv_num(j, "onset_frequency_hz", O->onset_frequency_hz);
+    gal_json_kv_num(j, "restable_speed_m_s", O->restable_speed);
     gal_json_kv_num(j, "divergence_speed_m_s", O->divergence_speed);
     gal_json_kv_num(j, "fold_speed_m_s", O->fold_speed);
     gal_json_kv_int(j, "onset_basis_modes", O->basis);
@@ -70,6 +72,7 @@ void gal_onset_write_json(const gal_onset *O, gal_json *j)
         gal_json_kv_num(j, "den_hartog", s->den_hartog);
         gal_json_kv_num(j, "den_hartog_onset_m_s", s->den_hartog_onset);
         gal_json_kv_num(j, "nigol_dcm_dalpha", s->nigol_dcm);
+        gal_json_kv_num(j, "nigol_onset_m_s", s->nigol_onset);
         gal_json_key(j, "modes");
         gal_json_arr_begin(j);
         for (int k = 0; k < O->nmodes; k++) {
@@ -94,6 +97,9 @@ void gal_onset_print(FILE *fp, const gal_onset *O)
                 O->onset_speed, O->onset_mode + 1, O->onset_frequency_hz, O->onset_share[0], O->onset_share[1],
                 O->onset_share[2]);
     else fprintf(fp, "  no onset: every followed mode is damped up to %g m/s\n", O->speed_max);
+    if (isfinite(O->restable_speed))
+        fprintf(fp, "  stable again above %.4g m/s (every followed mode damped up to %g m/s)\n", O->restable_speed,
+                O->speed_max);
     if (isfinite(O->divergence_speed)) fprintf(fp, "  torsional divergence at %.4g m/s\n", O->divergence_speed);
     if (isfinite(O->fold_speed)) fprintf(fp, "  the mean-wind equilibrium jumps (fold) at %.4g m/s\n", O->fold_speed);
 }

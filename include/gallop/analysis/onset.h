@@ -8,12 +8,14 @@
  *      apply), dF/dq and dF/dv the quasi-steady aerodynamic stiffness and damping, derivatives of
  *      gal_loads_full's element loads (central differences element by element: each element's load
  *      depends on its two nodes, its twist and its nodes' velocities only);
- *   3. projected on the lowest `basis` natural modes of (K(q), M) at that speed, the state matrix
+ *   3. projected on the lowest `basis` natural modes of (K(q), M) at that speed (with torsion, plus
+ *      the lowest GAL_ONSET_TORSIONAL torsional modes not among them), the state matrix
  *      [0 I; -K_t -C_t] and its eigenvalues (LAPACK dgeev): lambda = -zeta w +- i w sqrt(1-zeta^2).
  * The lowest `nmodes` aeroelastic modes at the first speed are followed over the speeds by
  * continuity (MAC of the physical shapes, less the relative frequency change). The onset is the
  * lowest speed at which a followed mode's damping ratio crosses zero (linear interpolation);
- * torsional divergence is where the smallest real eigenvalue of K_t crosses zero. */
+ * torsional divergence is where the smallest real eigenvalue of K_t crosses zero (at the linear
+ * divergence speed about the last stable configuration when that falls between the two speeds). */
 #ifndef GALLOP_ONSET_H
 #define GALLOP_ONSET_H
 
@@ -31,6 +33,8 @@ extern "C" {
 #define GAL_ONSET_SPEED_STEP 0.25
 #define GAL_ONSET_BASIS 30        /* natural modes in the basis (converged: see tests/test_onset.c) */
 #define GAL_ONSET_NMODES 8        /* aeroelastic modes followed */
+#define GAL_ONSET_TORSIONAL 4     /* torsional modes the basis holds at least (appended above the
+                                   * lowest `basis` when they are not among them) */
 
 typedef struct gal_onset_opts {
     double speed_min, speed_max, speed_step; /* m/s; speed_min may be 0 */
@@ -53,7 +57,12 @@ typedef struct gal_onset_speed {
                               * this speed with the ratio the applied damping gives it; inf: H >= 0 */
     double zeta_vertical;  /* that ratio */
     double nigol_dcm;      /* dC_M/dalpha at alpha (per rad); Nigol: < 0 torsionally unstable */
+    double zeta_torsional; /* the applied damping's ratio at the lowest torsional natural mode */
+    double nigol_onset;    /* m/s: Nigol's torsional onset of that mode at alpha (stability.h:
+                            * gal_stability_nigol_onset); inf: dC_M/dalpha >= 0; NaN: no torsion */
     double kt_min;         /* smallest real eigenvalue of the modal K_t, (rad/s)^2; < 0 diverged */
+    double divergence_linear; /* m/s: the speed at which K_t about this configuration, its aerodynamic
+                              * stiffness scaled with U^2, would turn singular (inf: never) */
 } gal_onset_speed;
 
 /* One followed aeroelastic mode at one speed. */
@@ -76,6 +85,8 @@ typedef struct gal_onset {
     int onset_mode;        /* index of the followed mode (0-based), -1 */
     double onset_frequency_hz;
     double onset_share[3]; /* vertical, horizontal, torsional at the onset (interpolated) */
+    double restable_speed; /* m/s, above it every followed mode is damped again up to speed_max
+                              * (interpolated); NaN: unstable at speed_max, or never unstable */
     double divergence_speed; /* m/s, kt_min crossing zero (interpolated); NaN: none */
     double fold_speed;     /* m/s, the first jump of the static path (midpoint); NaN: none */
     double wall_time_s;

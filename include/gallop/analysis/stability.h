@@ -24,6 +24,20 @@ extern "C" {
 double gal_stability_onset(const gal_aero_table *t, double alpha_rad, double mass, double zeta,
                            double omega, double rho, double diam);
 
+/* Nigol's torsional criterion (Nigol & Buchan 1981, "Conductor galloping, Part II: torsional
+ * mechanism", IEEE Trans. PAS-100(2), 708-720; summarized in CIGRE TB 322, 2007, "State of the art
+ * of conductor galloping", ch. 2): the section's rotation theta' changes the angle of attack by
+ * -R theta'/U (R a lever arm of the section), so the moment 1/2 rho U^2 d^2 C_M(alpha) gives the
+ * torsional motion the damping 1/2 rho U d^2 R dC_M/dalpha; a torsional mode of polar inertia I
+ * (kg m^2/m), circular frequency w and structural ratio zeta gallops torsionally where the total
+ * ratio zeta + rho U d^2 R dC_M/dalpha / (4 I w) < 0, i.e. when dC_M/dalpha < 0 above
+ *   U_N = 4 I w zeta / (rho d^2 R (-dC_M/dalpha)).
+ * R = GAL_NIGOL_ARM d (the conductor's radius). +INFINITY where dC_M/dalpha >= 0. Note the
+ * quasi-steady loads of the dynamic models use the velocity of the section's centre only (no R
+ * theta' term), so this mechanism is the classic column's, not the coupled analysis's. */
+#define GAL_NIGOL_ARM 0.5
+double gal_stability_nigol_onset(double dcm, double inertia, double omega, double zeta, double rho, double diam);
+
 /* What the criterion needs of the span. */
 typedef struct gal_stability_params {
     double mass;          /* kg/m, conductor and ice */
