@@ -34,7 +34,7 @@ static run_result free_vibration(int fam, double amp, double periods, int n_per,
     gal_rod_params p = span(30);
     gal_equilibrium eq;
     gal_modes md;
-    int want[4] = {0};
+    int want[GAL_FAMILY_COUNT] = {0};
     want[fam] = 1;
     CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
     CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
@@ -129,7 +129,7 @@ static void test_eccentric_ice_coupling(void)
     gal_rod_params p = span(30);
     gal_equilibrium eq;
     gal_modes md;
-    int want[4] = {1, 1, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {1, 1, 1, 0};
     CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
     CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
     double mix = 0;

@@ -57,7 +57,7 @@ static void test_den_hartog_damping(void)
     gal_equilibrium eq;
     CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 28000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
     gal_modes md;
-    int want[4] = {1, 0, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {1, 0, 0, 0};
     CHECK(gal_modes_find(eq.rod, eq.q, want, 100, &md) == GAL_OK, "%s", gal_error_message());
     int k = 0;
     while (!md.mode[k].selected) k++;

@@ -49,7 +49,7 @@ typedef struct {
     gal_modes md;
 } solved;
 
-static int solve(solved *s, int nel, double EA, const int want[4])
+static int solve(solved *s, int nel, double EA, const int want[GAL_FAMILY_COUNT])
 {
     gal_rod_params p = span(nel, EA);
     int st = gal_statics_solve(&p, GAL_BY_TENSION, H, NULL, &s->eq);
@@ -78,7 +78,7 @@ static double freq(const gal_modes *md, gal_family f, gal_symmetry sy, int k)
 static void test_out_of_plane_and_antisymmetric(void)
 {
     solved s;
-    int want[4] = {4, 4, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {4, 4, 0, 0};
     if (solve(&s, 100, 1e8, want)) return;
     double f1 = sqrt(H / M) / (2 * L);
     for (int n = 1; n <= 4; n++) {
@@ -106,7 +106,7 @@ static void check_symmetric(double lam2_target)
     double d = M * G * L * L / (8 * H), Le = L * (1 + 8 * (d / L) * (d / L));
     double EA = lam2_target * H * Le / (pow(M * G * L / H, 2) * L);
     solved s;
-    int want[4] = {3, 1, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {3, 1, 0, 0};
     if (solve(&s, 100, EA, want)) return;
     double dd = s.eq.sag, Le2 = L * (1 + 8 * (dd / L) * (dd / L)), Hh = s.eq.horizontal_tension;
     double lam2 = pow(M * G * L / Hh, 2) * L / (Hh * Le2 / EA);
@@ -143,7 +143,7 @@ static void test_symmetric_above_crossover(void) { check_symmetric(400.0); }
 static void test_torsional_string(void)
 {
     solved s;
-    int want[4] = {0, 0, 3, 0};
+    int want[GAL_FAMILY_COUNT] = {0, 0, 3, 0};
     if (solve(&s, 100, 1e8, want)) return;
     double L0 = s.eq.unstretched_length;
     for (int n = 1; n <= 3; n++) {
@@ -159,7 +159,7 @@ static void test_torsional_string(void)
 static void test_mass_normalized(void)
 {
     solved s;
-    int want[4] = {2, 2, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 2, 1, 0};
     if (solve(&s, 40, 1e8, want)) return;
     int n = s.md.ndof;
     double *mdiag = malloc(n * sizeof(double));
@@ -183,7 +183,7 @@ static void test_convergence_order(void)
     int nels[3] = {25, 50, 100};
     for (int k = 0; k < 3; k++) {
         solved s;
-        int want[4] = {0, 3, 0, 0};
+        int want[GAL_FAMILY_COUNT] = {0, 3, 0, 0};
         if (solve(&s, nels[k], 1e8, want)) return;
         double exact = 3 * sqrt(s.eq.horizontal_tension / M) / (2 * L);
         err[k] = fabs(freq(&s.md, GAL_FAMILY_HORIZONTAL, GAL_SYM_NONE, 3) - exact) / exact;
@@ -200,7 +200,7 @@ static void test_convergence_order(void)
  * 300 m Drake span (torsional modes far above the flexural ones: the shifts are used), with
  * eccentric ice (twist coupled to the motion through M and K: from the bottom) and with a soft
  * twist (torsional modes among the flexural ones, as on a bundle: foreseen, one run). */
-static void check_against_bottom(const gal_rod_params *p, const int want[4], int expect)
+static void check_against_bottom(const gal_rod_params *p, const int want[GAL_FAMILY_COUNT], int expect)
 {
     gal_equilibrium eq;
     gal_modes md, all;
@@ -243,9 +243,9 @@ static void test_family_shifts(void)
 {
     gal_rod_params p = {.length = 300, .elements = 200, .EA = 2.9e7, .EI = 28, .GJ = 160, .mass = 1.628,
                         .polar_inertia = 1.6e-4, .gravity = G, .torsion = 1, .twist_clamped = 1};
-    int want[4] = {3, 2, 2, 0};
+    int want[GAL_FAMILY_COUNT] = {3, 2, 2, 0};
     check_against_bottom(&p, want, 1);
-    int want3[4] = {1, 0, 3, 0};
+    int want3[GAL_FAMILY_COUNT] = {1, 0, 3, 0};
     check_against_bottom(&p, want3, 1);
     p.ecc_mass = 0.6, p.ecc = 0.02, p.ecc_angle = GAL_PI / 2, p.mass += 0.6; /* ice at the side */
     check_against_bottom(&p, want, 0);

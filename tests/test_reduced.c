@@ -18,7 +18,7 @@ static void test_kirchhoff_carrier(void)
     gal_equilibrium eq;
     CHECK(gal_statics_solve(&p, GAL_BY_TENSION, T0, NULL, &eq) == GAL_OK, "%s", gal_error_message());
     gal_modes md;
-    int want[4] = {0, 3, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {0, 3, 0, 0};
     CHECK(gal_modes_find(eq.rod, eq.q, want, 50, &md) == GAL_OK, "%s", gal_error_message());
     int sel[3], r = 0;
     for (int k = 0; k < md.n && r < 3; k++)
@@ -86,7 +86,7 @@ static void test_condensation_matters(void)
     gal_equilibrium eq;
     CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
     gal_modes md;
-    int want[4] = {2, 2, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 2, 1, 0};
     CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
     int sel[8], r = 0;
     for (int k = 0; k < md.n; k++)
@@ -180,7 +180,7 @@ static void free_vibration_vs_full(gal_family fam, double swing)
     gal_equilibrium eq;
     CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
     gal_modes md;
-    int want[4] = {3, 2, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {3, 2, 1, 0};
     CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
     int sel[8], r = 0;
     for (int k = 0; k < md.n; k++)
@@ -248,7 +248,7 @@ static void test_reduced_force_at_random_states(void)
     gal_equilibrium eq;
     CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 20000, NULL, &eq) == GAL_OK, "%s", gal_error_message());
     gal_modes md;
-    int want[4] = {2, 2, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 2, 1, 0};
     CHECK(gal_modes_find(eq.rod, eq.q, want, 200, &md) == GAL_OK, "%s", gal_error_message());
     int sel[8], r = 0;
     for (int k = 0; k < md.n; k++)
@@ -303,7 +303,7 @@ typedef struct {
     gal_reduced *rm;
 } small_rom;
 
-static int small_rom_build(small_rom *s, int nel, const int want[4])
+static int small_rom_build(small_rom *s, int nel, const int want[GAL_FAMILY_COUNT])
 {
     gal_rod_params p = {.length = 200, .elements = nel, .EA = 3e7, .EI = 20, .GJ = 150, .mass = 1.6,
                         .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
@@ -334,7 +334,7 @@ static void small_rom_clear(small_rom *s)
 static void test_rayleigh_projection(void)
 {
     small_rom s;
-    int want[4] = {3, 2, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {3, 2, 1, 0};
     small_rom_build(&s, 40, want);
     gal_equilibrium eq = s.eq;
     gal_modes md = s.md;
@@ -373,7 +373,7 @@ static int ramp_y(void *ctx, double t, double x, const double r[3], const double
 static void test_load_quadrature_exact(void)
 {
     small_rom s;
-    int want[4] = {2, 3, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 3, 0, 0};
     small_rom_build(&s, 20, want);
     gal_equilibrium eq = s.eq;
     const gal_rod *rod = eq.rod;

@@ -16,7 +16,7 @@ typedef struct {
     int sel[16], r;
 } span;
 
-static int make_span(span *s, const gal_rod_params *p, gal_statics_spec spec, double value, const int want[4])
+static int make_span(span *s, const gal_rod_params *p, gal_statics_spec spec, double value, const int want[GAL_FAMILY_COUNT])
 {
     memset(s, 0, sizeof *s);
     if (gal_statics_solve(p, spec, value, NULL, &s->eq) || gal_modes_find(s->eq.rod, s->eq.q, want, 60, &s->md)) {
@@ -43,7 +43,7 @@ static void test_kirchhoff_carrier(void)
     gal_rod_params p = {.length = L, .elements = 60, .EA = EA, .EI = 0, .GJ = 1, .mass = mass,
                         .polar_inertia = 1e-4, .gravity = 0, .torsion = 0, .twist_clamped = 1};
     span s;
-    int want[4] = {0, 1, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {0, 1, 0, 0};
     if (make_span(&s, &p, GAL_BY_TENSION, T0, want)) return;
     gal_rom *m = gal_rom_alloc(s.eq.rod, s.eq.q, &s.md, s.sel, 1, NULL, NULL);
     CHECK(m != NULL, "%s", gal_error_message());
@@ -100,7 +100,7 @@ static const gal_rod_params sagged = {.length = 150, .elements = 24, .EA = 3e7, 
 static void test_damping_forces_tangent(void)
 {
     span s;
-    int want[4] = {3, 2, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {3, 2, 1, 0};
     if (make_span(&s, &sagged, GAL_BY_SAG, 4.0, want)) return;
     gal_rom_opts o;
     gal_rom_default_opts(&o);
@@ -163,7 +163,7 @@ static void test_damping_forces_tangent(void)
 static void test_energy_and_symmetry(void)
 {
     span s;
-    int want[4] = {2, 1, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 1, 0, 0};
     gal_rod_params p = sagged;
     p.elements = 16, p.torsion = 0;
     if (make_span(&s, &p, GAL_BY_SAG, 4.0, want)) return;
@@ -248,7 +248,7 @@ static void test_short_span_against_full(void)
 static void test_step_halving(void)
 {
     span s;
-    int want[4] = {2, 1, 0, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 1, 0, 0};
     gal_rod_params p = sagged;
     p.elements = 16, p.torsion = 0;
     if (make_span(&s, &p, GAL_BY_SAG, 4.0, want)) return;

@@ -23,7 +23,7 @@ static void test_grow(void)
 {
     gal_equilibrium eq = {0};
     gal_modes md = {0};
-    int want[4] = {2, 1, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 1, 1, 0};
     if (gal_statics_solve(&sagged, GAL_BY_SAG, 4.0, NULL, &eq) || gal_modes_find(eq.rod, eq.q, want, 40, &md)) {
         CHECK(0, "%s", gal_error_message());
         return;
