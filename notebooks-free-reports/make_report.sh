@@ -210,4 +210,5 @@ for scene in "${scenes[@]}"; do
     echo "  report: $d/report.md" >&2
     echo "- [$name]($name/report.md)" >> "$index"
 done
+has sweep && [ -r "$root/data/scenes/iced_gallop.ini" ] && { bash "$here/sweep_report.sh" "$bin" "$root/data/scenes/iced_gallop.ini" "$outroot" >&2 && echo "- [sweep](sweep/report.md)" >> "$index" || status=1; }
 exit $status
