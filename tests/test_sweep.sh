@@ -101,5 +101,19 @@ awk -F, '$1 == 2 && $2 == "up" { u = $3 } $1 == 2 && $2 == "down" { d = $3 } END
   "$tmp/cont/sweep.csv" && ok "--continuation: the way down carries the motion of the top" \
   || bad "continuation amplitudes: $(cut -d, -f1-3 "$tmp/cont/sweep.csv" | tr '\n' ' ')"
 
+# ---- a galloping hysteresis loop (tests/sweep/hysteresis.ini: a subcritical section, the linear
+# onset at 7.5 m/s, galloping kept down to about 4.9 m/s by harmonic balance), full model ----
+"$GALLOP" sweep "$here/sweep/hysteresis.ini" --vary wind.speed=4:10:2 --continuation --model full -o "$tmp/hyst" \
+  > /dev/null 2> "$tmp/hyst.err"; rc=$?
+up=$(jq '.galloping_from["wind.speed"][] | select(.branch == "up") | .galloping_from' "$tmp/hyst/summary.json")
+down=$(jq '.galloping_from["wind.speed"][] | select(.branch == "down") | .galloping_from' "$tmp/hyst/summary.json")
+[ $rc -eq 0 ] && [ "$up" = 10 ] && [ "$down" = 6 ] \
+  && ok "hysteresis: galloping from 10 m/s on the way up, down to 6 m/s on the way down" \
+  || bad "hysteresis: exit $rc, up $up, down $down: $(cut -d, -f1-3 "$tmp/hyst/sweep.csv" | tr '\n' ' ')"
+# at 6 m/s: at rest on the way up, galloping (> 0.3 m) on the way down; none at 4 m/s either way
+awk -F, '$1 == 6 && $2 == "up" { u = $3 } $1 == 6 && $2 == "down" { d = $3 } $1 == 4 && $2 == "down" { z = $3 }
+         END { exit !(u < 0.01 && d > 0.3 && z < 0.01) }' "$tmp/hyst/sweep.csv" \
+  && ok "hysteresis: 6 m/s still up, galloping down; 4 m/s still" || bad "hysteresis amplitudes"
+
 echo "#summary $pass $fail"
 [ $fail -eq 0 ]
