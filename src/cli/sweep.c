@@ -23,7 +23,7 @@ typedef struct {
     const gal_cli_command *c;
     gal_cli_args a;
     const char *path, *outdir;     /* outdir: dir[] */
-    char dir[GAL_PATH_MAX];
+    char dir[GAL_PATH_MAX], casedir[GAL_PATH_MAX + 8];
     const char *const *user;       /* the --set values */
     int nuser;
     gal_model_kind kind;
@@ -60,11 +60,30 @@ static void failed_case(gal_sweep_result *r, int st)
     r->valid = -1;
 }
 
+/* The unit handed out h-th: the points in the order of the last key fastest (of the keys the units
+ * run over: a chain runs along the first), so that ranks at work at the same time take different
+ * spans; each span's onset is computed once and kept in DIR/cases for the other ranks. */
+static long unit_of(const gal_sweep_grid *g, long h)
+{
+    int k0 = g->continuation ? 1 : 0, idx[GAL_SWEEP_MAX_AXES];
+    for (int k = g->naxes - 1; k >= k0; k--) {
+        idx[k] = (int)(h % g->axis[k].n);
+        h /= g->axis[k].n;
+    }
+    long u = 0, stride = 1;
+    for (int k = k0; k < g->naxes; k++) {
+        u += idx[k] * stride;
+        stride *= g->axis[k].n;
+    }
+    return u;
+}
+
 /* One unit: a case, or a chain up and down the first key, each case from its predecessor's state. */
-static void run_unit(void *ctx, long u)
+static void run_unit(void *ctx, long h)
 {
     sweep *S = ctx;
     const gal_sweep_grid *g = &S->g;
+    long u = unit_of(g, h);
     double *q = NULL, *v = NULL;
     int nq = 0;
     uint64_t prev = 0;
@@ -204,6 +223,8 @@ int gal_cli_sweep(int argc, char **argv)
     if (!rc && (st = options(S))) rc = fail("", st);
     loud(saved);
     if (!rc && (st = gal_sweep_cases_dir(S->outdir))) rc = fail("", st);
+    snprintf(S->casedir, sizeof S->casedir, "%s/cases", S->dir);
+    S->cache.dir = S->casedir;
     if (!rc) {
         long computed = 0;
         gal_par_run(S->par, S->g.nunits, S->g.ncases, run_unit, S, &computed);

@@ -10,10 +10,12 @@
 #include "gallop/output/record.h"
 #include "gallop/run/sim.h"
 
+#include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* The scene less what the onset analysis ignores (the wind speed, [simulation]), hashed with its
  * aero table's bytes: the cache's key. */
@@ -33,17 +35,33 @@ static int onset_key(const gal_scene *sc, uint64_t *key)
     return st;
 }
 
-/* The coupled onset of the span (NaN: stable over the [stability] range), as `gallop stability`. */
-static int onset_of(const gal_scene *sc, gal_sweep_onset_cache *cache, double *speed)
+/* The onset kept in cache->dir: 1 found (*speed), 0 not. */
+static int disk_get(const gal_sweep_onset_cache *cache, uint64_t key, double *speed)
 {
-    uint64_t key = 0;
-    int st = cache ? onset_key(sc, &key) : GAL_OK;
-    if (st) return st;
-    for (int i = 0; cache && i < cache->n; i++)
-        if (cache->key[i] == key) {
-            *speed = cache->speed[i];
-            return GAL_OK;
-        }
+    char path[GAL_PATH_MAX + 40];
+    snprintf(path, sizeof path, "%s/onset-%016" PRIx64, cache->dir, key);
+    FILE *fp = fopen(path, "r");
+    int ok = fp && fscanf(fp, "%lf", speed) == 1;
+    if (fp) fclose(fp);
+    return ok;
+}
+
+/* ... written whole or not at all (another process may read it at any time) */
+static void disk_put(const gal_sweep_onset_cache *cache, uint64_t key, double speed)
+{
+    char path[GAL_PATH_MAX + 40], tmp[GAL_PATH_MAX + 64];
+    snprintf(path, sizeof path, "%s/onset-%016" PRIx64, cache->dir, key);
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    FILE *fp = fopen(tmp, "w");
+    if (!fp) return;
+    int ok = fprintf(fp, "%.17g\n", speed) > 0;
+    if (fclose(fp) != 0 || !ok || rename(tmp, path) != 0) remove(tmp);
+}
+
+/* The coupled onset of the span (NaN: stable over the [stability] range), as `gallop stability`. */
+static int onset_compute(const gal_scene *sc, double *speed)
+{
+    int st;
     gal_model *m = gal_model_alloc(sc, &st);
     gal_data *d = m ? gal_data_alloc(m) : NULL;
     if (m && !d) st = GAL_ENOMEM;
@@ -61,12 +79,29 @@ static int onset_of(const gal_scene *sc, gal_sweep_onset_cache *cache, double *s
     }
     gal_data_free(d);
     gal_model_free(m);
-    if (!st && cache) {
-        cache->key[cache->next] = key, cache->speed[cache->next] = *speed;
-        cache->next = (cache->next + 1) % GAL_SWEEP_ONSET_CACHE;
-        if (cache->n < GAL_SWEEP_ONSET_CACHE) cache->n++;
-    }
     return st;
+}
+
+/* The onset from the cache (memory, then the files), else computed and kept. */
+static int onset_of(const gal_scene *sc, gal_sweep_onset_cache *cache, double *speed)
+{
+    uint64_t key = 0;
+    int st = cache ? onset_key(sc, &key) : GAL_OK;
+    if (st) return st;
+    if (!cache) return onset_compute(sc, speed);
+    for (int i = 0; i < cache->n; i++)
+        if (cache->key[i] == key) {
+            *speed = cache->speed[i];
+            return GAL_OK;
+        }
+    if (!(cache->dir && disk_get(cache, key, speed))) {
+        if ((st = onset_compute(sc, speed))) return st;
+        if (cache->dir) disk_put(cache, key, *speed);
+    }
+    cache->key[cache->next] = key, cache->speed[cache->next] = *speed;
+    cache->next = (cache->next + 1) % GAL_SWEEP_ONSET_CACHE;
+    if (cache->n < GAL_SWEEP_ONSET_CACHE) cache->n++;
+    return GAL_OK;
 }
 
 /* The run itself, its end state into q_end, v_end when given. */

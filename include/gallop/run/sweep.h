@@ -94,6 +94,8 @@ typedef struct gal_sweep_result {
  * (wind speed, [simulation]): a sweep over the wind speed analyses its span once. */
 #define GAL_SWEEP_ONSET_CACHE 32
 typedef struct gal_sweep_onset_cache {
+    const char *dir;               /* also kept as DIR/onset-<key> files (NULL: in memory only), so
+                                    * that other processes, and a rerun, find them */
     int n, next;
     uint64_t key[GAL_SWEEP_ONSET_CACHE];
     double speed[GAL_SWEEP_ONSET_CACHE];
