@@ -30,7 +30,7 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 TEST_SH  := $(wildcard tests/test_*.sh)
 
 DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-dev \
-            liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox jq
+            liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox jq libopenmpi-dev openmpi-bin
 STAMP    := build/.deps-ok
 
 .PHONY: all deps demo check bench report clean fuzz mutate install
@@ -51,7 +51,21 @@ $(BUILD)/libgallop.a: $(LIB_OBJ)
 	ar rcs $@ $^
 
 $(BUILD)/gallop: $(CLI_OBJ) $(BUILD)/libgallop.a
-	$(CC) $(ALL_CFLAGS) $^ $(LIBS) -o $@
+	$(CC) $(ALL_CFLAGS) -pthread $^ $(LIBS) $(MPI_LIBS) -o $@
+
+# ---- MPI (issue 18): `gallop sweep` over the ranks of mpirun when Open MPI is there (pkg-config
+# ompi, else mpicc); MPI=0 builds the serial sweep. Evaluated when used, after the packages are in;
+# $(BUILD)/.mpi changes only when the choice does, and then sweep_par.o is rebuilt. ----
+MPI ?= auto
+MPI_ON = $(if $(filter 0,$(MPI)),0,$(shell pkg-config --exists ompi 2>/dev/null && echo 1 || { command -v mpicc >/dev/null 2>&1 && echo 1; } || echo 0))
+MPI_CFLAGS = $(if $(filter 1,$(MPI_ON)),-DGAL_MPI $(shell pkg-config --cflags ompi 2>/dev/null || mpicc --showme:compile))
+MPI_LIBS = $(if $(filter 1,$(MPI_ON)),$(shell pkg-config --libs ompi 2>/dev/null || mpicc --showme:link))
+$(BUILD)/.mpi: FORCE | $(STAMP)
+	@mkdir -p $(dir $@); v="$(MPI_ON)"; [ "$$(cat $@ 2>/dev/null)" = "$$v" ] || echo "$$v" > $@
+$(BUILD)/obj/cli/sweep_par.o: CPPFLAGS += $(MPI_CFLAGS)
+$(BUILD)/obj/cli/sweep_par.o: $(BUILD)/.mpi
+.PHONY: FORCE
+FORCE:
 
 $(BUILD)/tests/%: tests/%.c tests/check.h $(BUILD)/libgallop.a
 	@mkdir -p $(dir $@)

@@ -46,6 +46,7 @@
 #include "gallop/run/forward.h"
 #include "gallop/run/integrator.h"
 #include "gallop/run/sim.h"
+#include "gallop/run/sweep.h"
 /* analysis: spectra, stability, galloping onset, accuracy */
 #include "gallop/analysis/spectrum.h"
 #include "gallop/analysis/stability.h"
@@ -66,5 +67,6 @@
 #include "gallop/output/record.h"
 #include "gallop/output/specreport.h"
 #include "gallop/output/stabreport.h"
+#include "gallop/output/sweepreport.h"
 #include "gallop/output/windreport.h"
 #endif

@@ -12,7 +12,7 @@ tmp=$(mktemp -d /tmp/gallop_help_XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 
 "$GALLOP" --help > "$tmp/help" 2>&1 && ok "gallop --help exits 0" || bad "gallop --help: exit $?"
-commands="modes simulate compare stability wind accuracy spectrum check version"
+commands="modes simulate compare stability wind accuracy spectrum sweep check version"
 for c in $commands; do
   grep -q "^  gallop $c" "$tmp/help" || bad "gallop --help does not list $c"
 done

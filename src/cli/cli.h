@@ -16,6 +16,7 @@ int gal_cli_spectrum(int argc, char **argv);
 int gal_cli_stability(int argc, char **argv);
 int gal_cli_wind(int argc, char **argv);
 int gal_cli_accuracy(int argc, char **argv);
+int gal_cli_sweep(int argc, char **argv);
 /* `gallop modes` of an explicit bundle (src/cli/bundle.c) */
 int gal_cli_modes_bundle(const struct gal_scene *sc, const char *outdir);
 

@@ -56,6 +56,16 @@ const gal_cli_command gal_cli_commands[] = {
       {"segment", 0, "N", 0,
        "Welch segment, samples (default: the largest power of two giving >= 8 segments, at least 256)"},
       {"output", 'o', "DIR", 0, "output directory (default: the directory of TRACE.csv + /spectrum)"}}},
+    {"sweep", gal_cli_sweep, "SCENE", "scene",
+     "the scene over a grid of keys (galloping amplitude against wind speed...), alone or under mpirun",
+     "LIST: v1,v2,... or start:stop:step; several --vary make the product grid. Writes DIR/sweep.csv (a row\n"
+     "per case), summary.json, and DIR/cases/ (each finished case: a rerun skips it). `mpirun -n N gallop\n"
+     "sweep ...` hands the cases out to N ranks; the results are the same whatever N\n",
+     {{"vary", 0, "SECTION.KEY=LIST", 1, "vary this key over LIST (repeatable: the product grid)"},
+      {"model", 0, "reduced|full", 0, "the model to integrate (default: reduced)"},
+      {"continuation", 0, NULL, 0,
+       "along the first key, start each case from the previous case's final state, up then down (hysteresis)"},
+      OUT, SET}},
     {"check", gal_cli_check, "SCENE", "scene", "parse, validate and print the resolved scene (every key, its unit)",
      "prints INI that gallop reads back; nothing is computed or written\n", {SET}},
     {"version", gal_cli_version, NULL, NULL, "print the version", NULL, {{NULL, 0, NULL, 0, NULL}}},

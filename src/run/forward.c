@@ -31,6 +31,7 @@ gal_data *gal_data_free(gal_data *d)
         gal_damping_free(d->damping);
         free(d->wind_u);
         free(d->q_start);
+        free(d->v_start);
         gal_reduced_free(d->rm);
         free(d);
     }
@@ -96,6 +97,21 @@ static int stage_start(const gal_model *m, gal_data *d)
     double tol = 1e-6 * fmax(d->eq.horizontal_tension, 1.0) / rod->p.elements;
     int st = gal_loads_static(d->eq.rod, d->q_start, &d->loads, tol, 100, &d->mean_wind_iterations);
     if (st) return gal_error(st, "%s: no equilibrium under the mean wind: %s", m->sc.path, gal_error_message());
+    d->loads.ramp_time = 0;
+    return GAL_OK;
+}
+
+/* A given start state (forward.h) */
+int gal_data_start_from(const gal_model *m, gal_data *d, const double *q, const double *v)
+{
+    int st = gal_forward(m, d, GAL_STAGE_START);
+    if (st) return st;
+    size_t nq = (size_t)d->eq.rod->nq;
+    free(d->v_start);
+    d->v_start = NULL;
+    if (v && !(d->v_start = malloc(nq * sizeof(double)))) return gal_error(GAL_ENOMEM, "out of memory");
+    memcpy(d->q_start, q, nq * sizeof(double));
+    if (v) memcpy(d->v_start, v, nq * sizeof(double));
     d->loads.ramp_time = 0;
     return GAL_OK;
 }

@@ -51,7 +51,7 @@ static int full_alloc(const gal_model *m, const gal_data *d, const gal_run_opts 
     go.damping = d->damping;
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */
-    s->dyn = gal_dyn_alloc(rod, d->q_start, NULL, &go, &F);
+    s->dyn = gal_dyn_alloc(rod, d->q_start, d->v_start, &go, &F);
     if (!s->dyn) {
         full_free(s);
         return GAL_EFAIL;
@@ -93,6 +93,14 @@ static void full_counters(const void *state, gal_run_counters *c)
     c->rejected_steps = d->rejected_steps;
 }
 
+static void full_state_of(const void *state, double *q, double *v)
+{
+    const full_state *s = state;
+    memcpy(q, s->dyn->q, (size_t)s->rod->nq * sizeof(double));
+    memcpy(v, s->dyn->v, (size_t)s->rod->nq * sizeof(double));
+}
+
 const gal_integrator_type gal_integrator_full = {
     "full", GAL_MODEL_FULL, GAL_STAGE_START, full_alloc, full_advance, full_observe, full_counters, full_free,
+    full_state_of,
 };

@@ -114,5 +114,5 @@ static void reduced_counters(const void *state, gal_run_counters *c)
 
 const gal_integrator_type gal_integrator_reduced = {
     "reduced", GAL_MODEL_REDUCED, GAL_STAGE_REDUCED, reduced_alloc, reduced_advance, reduced_observe,
-    reduced_counters, reduced_free,
+    reduced_counters, reduced_free, NULL,
 };

@@ -96,7 +96,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
         return st;
     }
     s->basis_start = s->rom->r;
-    if ((st = gal_rom_start(s->rom, 0.0, d->q_start, NULL))) {
+    if ((st = gal_rom_start(s->rom, 0.0, d->q_start, d->v_start))) {
         rom_free(s);
         return st;
     }
@@ -172,6 +172,13 @@ static void rom_counters(const void *state, gal_run_counters *c)
     memcpy(c->growth, s->adapt.ev, sizeof s->adapt.ev);
 }
 
+static void rom_state_of(const void *state, double *q, double *v)
+{
+    const rom_state *s = state;
+    gal_rom_reconstruct(s->rom, q, v);
+}
+
 const gal_integrator_type gal_integrator_rom = {
     "reduced", GAL_MODEL_REDUCED, GAL_STAGE_START, rom_alloc, rom_advance, rom_observe, rom_counters, rom_free,
+    rom_state_of,
 };

@@ -91,8 +91,17 @@ int gal_run_check_measurable(const gal_model *m, gal_data *d, const gal_run_opts
 int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const gal_run_opts *o,
             gal_sim_result *res)
 {
+    return gal_run_to_state(m, d, T, o, res, NULL, NULL);
+}
+
+int gal_run_to_state(const gal_model *m, gal_data *d, const gal_integrator_type *T, const gal_run_opts *o,
+                     gal_sim_result *res, double *q_end, double *v_end)
+{
     memset(res, 0, sizeof *res);
     res->kind = T->kind;
+    if ((q_end || v_end) && !T->state)
+        return gal_error(GAL_EINPUT, "%s: the %s integrator (model.reduced = identified) cannot give its final "
+                         "state; allowed: the full model or model.reduced = recomputed", m->sc.path, T->name);
     double dt_out = 0, fhi = 0;
     int st = gal_forward(m, d, GAL_STAGE_MODES);
     if (!st) st = sampling(m, d, o, &dt_out, &fhi);
@@ -103,6 +112,7 @@ int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const
     void *state;
     if ((st = T->alloc(m, d, o, dt_out, fhi, &state))) return st;
     st = integrate(T, state, res);
+    if (!st && q_end && v_end) T->state(state, q_end, v_end);
     gal_run_counters c;
     T->counters(state, &c);
     T->free(state);

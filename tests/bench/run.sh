@@ -31,6 +31,7 @@ for src in tests/bench/bench_*.c; do
   [ "$(basename "$exe")" = bench_ccx ] && args=("$build/bench/ccx")
   $CPU "$exe" ${args[@]+"${args[@]}"} | grep '^BENCH|' >>"$rows"
 done
+bash tests/bench/sweep.sh "$build" >>"$rows"   # 2 MPI ranks against 1 (issue 18)
 kept=$(sed -n '/^## /,$p' notebooks-free-reports/BENCHMARKS.md 2>/dev/null || true)
 table=$( {
   echo "| figure | value | unit | how |"

@@ -55,6 +55,7 @@ typedef struct gal_data {
     double *wind_u;
     /* start */
     double *q_start;         /* nq */
+    double *v_start;         /* nq: the start velocity (gal_data_start_from), or NULL: at rest */
     int mean_wind_iterations;/* Newton iterations of the equilibrium under the mean wind */
     /* reduced */
     gal_reduced *rm;         /* owned, or NULL */
@@ -75,6 +76,11 @@ gal_data *gal_data_free(gal_data *d);
  * does not change, so neither would they). The status of the first stage that fails, its message
  * naming the scene; d then holds the stages before it. */
 int gal_forward(const gal_model *m, gal_data *d, gal_stage upto);
+
+/* Start the runs of d from a given state (a sweep's continuation: the previous case's final state):
+ * d forwarded to the start stage, then q_start = q and v_start = v (nq entries each; v NULL: at
+ * rest), and the wind blows at full speed from t = 0 (no ramp: the span is already in it). */
+int gal_data_start_from(const gal_model *m, gal_data *d, const double *q, const double *v);
 
 #ifdef __cplusplus
 }

@@ -58,6 +58,9 @@ typedef struct gal_integrator_type {
     void (*observe)(void *state, double *probes, double tension[2]);
     void (*counters)(const void *state, gal_run_counters *c);
     void (*free)(void *state);
+    /* The full state reached, configuration and velocity (nq each); NULL: this integrator cannot
+     * give it (then no run can continue from it). */
+    void (*state)(const void *state, double *q, double *v);
 } gal_integrator_type;
 
 extern const gal_integrator_type gal_integrator_full;

@@ -47,6 +47,10 @@ void gal_run_opts_from_scene(const gal_scene *sc, gal_run_opts *o);
 int gal_run_check_measurable(const gal_model *m, gal_data *d, const gal_run_opts *o);
 int gal_run(const gal_model *m, gal_data *d, const gal_integrator_type *T, const gal_run_opts *o,
             gal_sim_result *res);
+/* The same, and the full state at the end of the run into q_end, v_end (nq entries each, both
+ * given): the start of a continued run (gal_data_start_from). GAL_EINPUT when T cannot give it. */
+int gal_run_to_state(const gal_model *m, gal_data *d, const gal_integrator_type *T, const gal_run_opts *o,
+                     gal_sim_result *res, double *q_end, double *v_end);
 void gal_sim_result_clear(gal_sim_result *res);
 
 /* A scene's model and data for runs whose controls are read from the scene at each run (a sweep

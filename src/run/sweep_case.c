@@ -1,0 +1,172 @@
+/* sweep_case.c: one case of a sweep (sweep.h): the scene run as `gallop simulate` runs it (the
+ * pipeline to the start, gal_run with the full or the scene's reduced integrator), or continued
+ * from a given state (gal_data_start_from); the measures at the first probe; the coupled onset
+ * about the mean-wind equilibrium as `gallop stability` finds it (analysis/onset.h), once per
+ * span and process. */
+#include "gallop/run/sweep.h"
+#include "gallop/analysis/measure.h"
+#include "gallop/analysis/onset.h"
+#include "gallop/base/core.h"
+#include "gallop/output/record.h"
+#include "gallop/run/sim.h"
+
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* The scene less what the onset analysis ignores (the wind speed, [simulation]), hashed with its
+ * aero table's bytes: the cache's key. */
+static int onset_key(const gal_scene *sc, uint64_t *key)
+{
+    gal_scene *c = malloc(sizeof *c);
+    if (!c) return gal_error(GAL_ENOMEM, "sweep: out of memory");
+    *c = *sc;
+    c->wind.speed = 0;
+    memset(&c->simulation, 0, sizeof c->simulation);
+    uint64_t h = 0, t = 0;
+    long bytes = 0;
+    int st = gal_record_scene_hash(c, &h);
+    free(c);
+    if (!st) st = gal_record_file_hash(sc->ice.aero_table, &t, &bytes);
+    *key = gal_record_fnv1a64(&t, sizeof t, h);
+    return st;
+}
+
+/* The onset kept in cache->dir: 1 found (*speed), 0 not. */
+static int disk_get(const gal_sweep_onset_cache *cache, uint64_t key, double *speed)
+{
+    char path[GAL_PATH_MAX + 40];
+    snprintf(path, sizeof path, "%s/onset-%016" PRIx64, cache->dir, key);
+    FILE *fp = fopen(path, "r");
+    int ok = fp && fscanf(fp, "%lf", speed) == 1;
+    if (fp) fclose(fp);
+    return ok;
+}
+
+/* ... written whole or not at all (another process may read it at any time) */
+static void disk_put(const gal_sweep_onset_cache *cache, uint64_t key, double speed)
+{
+    char path[GAL_PATH_MAX + 40], tmp[GAL_PATH_MAX + 64];
+    snprintf(path, sizeof path, "%s/onset-%016" PRIx64, cache->dir, key);
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    FILE *fp = fopen(tmp, "w");
+    if (!fp) return;
+    int ok = fprintf(fp, "%.17g\n", speed) > 0;
+    if (fclose(fp) != 0 || !ok || rename(tmp, path) != 0) remove(tmp);
+}
+
+/* The coupled onset of the span (NaN: stable over the [stability] range), as `gallop stability`. */
+static int onset_compute(const gal_scene *sc, double *speed)
+{
+    int st;
+    gal_model *m = gal_model_alloc(sc, &st);
+    gal_data *d = m ? gal_data_alloc(m) : NULL;
+    if (m && !d) st = GAL_ENOMEM;
+    if (!st) st = gal_forward(m, d, GAL_STAGE_WIND);
+    if (!st) {
+        gal_onset_opts o;
+        gal_onset_default_opts(&o);
+        o.speed_min = sc->stability.speed_min, o.speed_max = sc->stability.speed_max;
+        o.speed_step = sc->stability.speed_step;
+        double mass = sc->conductor.mass_per_length + (sc->ice.present ? sc->ice.mass_per_length : 0);
+        gal_onset O;
+        st = gal_onset_analyse(d->eq.rod, d->eq.q, &d->loads, d->damping, mass, &o, &O);
+        if (!st) *speed = O.onset_speed;
+        if (!st) gal_onset_clear(&O);
+    }
+    gal_data_free(d);
+    gal_model_free(m);
+    return st;
+}
+
+/* The onset from the cache (memory, then the files), else computed and kept. */
+static int onset_of(const gal_scene *sc, gal_sweep_onset_cache *cache, double *speed)
+{
+    uint64_t key = 0;
+    int st = cache ? onset_key(sc, &key) : GAL_OK;
+    if (st) return st;
+    if (!cache) return onset_compute(sc, speed);
+    for (int i = 0; i < cache->n; i++)
+        if (cache->key[i] == key) {
+            *speed = cache->speed[i];
+            return GAL_OK;
+        }
+    if (!(cache->dir && disk_get(cache, key, speed))) {
+        if ((st = onset_compute(sc, speed))) return st;
+        if (cache->dir) disk_put(cache, key, *speed);
+    }
+    cache->key[cache->next] = key, cache->speed[cache->next] = *speed;
+    cache->next = (cache->next + 1) % GAL_SWEEP_ONSET_CACHE;
+    if (cache->n < GAL_SWEEP_ONSET_CACHE) cache->n++;
+    return GAL_OK;
+}
+
+/* The run itself, its end state into q_end, v_end when given. */
+static int run_case(const gal_scene *sc, gal_model_kind kind, const double *q0, const double *v0, int nq0,
+                    gal_sweep_result *r, double **q_end, double **v_end, int *nq)
+{
+    int st;
+    gal_model *m = gal_model_alloc(sc, &st);
+    gal_data *d = m ? gal_data_alloc(m) : NULL;
+    if (m && !d) st = GAL_ENOMEM;
+    if (!st) st = gal_forward(m, d, GAL_STAGE_START);
+    const gal_integrator_type *T = NULL;
+    if (!st) T = kind == GAL_MODEL_FULL ? &gal_integrator_full : gal_integrator_reduced_of(m);
+    if (!st && q0 && nq0 != d->eq.rod->nq)
+        st = gal_error(GAL_EINPUT, "%s: --continuation: this case has %d unknowns, the one it continues %d: the "
+                       "varied keys must keep the mesh ([model] elements, effects)", sc->path, d->eq.rod->nq, nq0);
+    if (!st && q0) st = gal_data_start_from(m, d, q0, v0);
+    gal_run_opts o;
+    gal_run_opts_from_scene(sc, &o);
+    if (!st) st = gal_run_check_measurable(m, d, &o);
+    if (!st && q_end) {
+        *nq = d->eq.rod->nq;
+        *q_end = malloc((size_t)*nq * sizeof(double));
+        *v_end = malloc((size_t)*nq * sizeof(double));
+        if (!*q_end || !*v_end) st = gal_error(GAL_ENOMEM, "sweep: out of memory");
+    }
+    gal_sim_result res;
+    memset(&res, 0, sizeof res);
+    if (!st) st = gal_run_to_state(m, d, T, &o, &res, q_end ? *q_end : NULL, v_end ? *v_end : NULL);
+    gal_sim_measures ms;
+    if (!st) st = gal_sim_measure(&res, 0, -1, &ms);
+    if (!st) {
+        r->horizontal_pp_m = ms.peak_to_peak[0], r->vertical_pp_m = ms.peak_to_peak[1];
+        r->twist_pp_deg = ms.peak_to_peak[3], r->frequency_hz = ms.frequency_hz[1];
+        r->tension_max_n = ms.tension_max_steady;
+        r->valid = res.checked ? res.valid : -1;
+        r->residual_max = res.checked ? res.residual_max : NAN;
+    }
+    gal_sim_result_clear(&res);
+    gal_data_free(d);
+    gal_model_free(m);
+    return st;
+}
+
+int gal_sweep_case_run(const gal_scene *sc, gal_model_kind kind, const double *q0, const double *v0, int nq0,
+                       gal_sweep_onset_cache *cache, gal_sweep_result *r, double **q_end, double **v_end, int *nq)
+{
+    double t0 = gal_wall_time();
+    memset(r, 0, sizeof *r);
+    r->vertical_pp_m = r->horizontal_pp_m = r->twist_pp_deg = r->frequency_hz = r->tension_max_n = NAN;
+    r->onset_speed_m_s = r->residual_max = NAN;
+    r->valid = -1;
+    if (q_end) *q_end = *v_end = NULL;
+    gal_error_clear();
+    int st = run_case(sc, kind, q0, v0, nq0, r, q_end, v_end, nq);
+    r->has_onset = sc->ice.present && sc->ice.aero_table[0];
+    if (!st && r->has_onset) st = onset_of(sc, cache, &r->onset_speed_m_s);
+    r->status = st;
+    if (st) {
+        snprintf(r->message, sizeof r->message, "%s", gal_error_message());
+        if (q_end) {
+            free(*q_end), free(*v_end);
+            *q_end = *v_end = NULL;
+        }
+    }
+    r->wall_time_s = gal_wall_time() - t0;
+    return st == GAL_ENOMEM ? st : GAL_OK;
+}
