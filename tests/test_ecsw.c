@@ -53,7 +53,7 @@ typedef struct {
     int sel[16], r;
 } span;
 
-static int make_span(span *s, const gal_rod_params *p, double sag, const int want[4])
+static int make_span(span *s, const gal_rod_params *p, double sag, const int want[GAL_FAMILY_COUNT])
 {
     memset(s, 0, sizeof *s);
     if (gal_statics_solve(p, GAL_BY_SAG, sag, NULL, &s->eq) || gal_modes_find(s->eq.rod, s->eq.q, want, 60, &s->md)) {
@@ -81,7 +81,7 @@ static const gal_rod_params iced = {.length = 150, .height_difference = 20, .ele
 static void element_split(const gal_rod_params *p)
 {
     span s;
-    int want[4] = {2, 1, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 1, 1, 0};
     if (make_span(&s, p, 4.0, want)) return;
     const gal_rod *rod = s.eq.rod;
     int nq = rod->nq, ne = gal_rod_element_count(rod);
@@ -147,7 +147,7 @@ static double rel_err(const gal_rom *m, const double *a, const double *b, const 
 static void test_hyper_forces(void)
 {
     span s;
-    int want[4] = {2, 1, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 1, 1, 0};
     if (make_span(&s, &iced, 4.0, want)) return;
     gal_rom_opts o;
     gal_rom_default_opts(&o);
@@ -238,7 +238,7 @@ static void test_load_elements(void)
 static void test_mirror_and_resample(void)
 {
     span s;
-    int want[4] = {2, 1, 1, 0};
+    int want[GAL_FAMILY_COUNT] = {2, 1, 1, 0};
     gal_rod_params p = iced;
     p.height_difference = 0, p.ecc_mass = 0, p.ecc = 0;
     if (make_span(&s, &p, 4.0, want)) return;
