@@ -272,6 +272,116 @@ static void test_step_halving(void)
     free_span(&s);
 }
 
+
+/* The quadratic manifold (o.manifold): on the taut string the first mode's coordinate alone
+ * carries Kirchhoff-Carrier's cubic (the stretching rides on the manifold); its reduced force is
+ * P(x)^T grad U at the reconstructed state (exactly, every element) and its tangent the force's
+ * derivative; undamped and unloaded, the energy drifts less than 1e-3 over 1000 periods (with the
+ * sampled elements). */
+static void test_manifold(void)
+{
+    double L = 100, T0 = 1e4, mass = 1.0, EA = 1e7;
+    gal_rod_params p = {.length = L, .elements = 60, .EA = EA, .EI = 0, .GJ = 1, .mass = mass,
+                        .polar_inertia = 1e-4, .gravity = 0, .torsion = 0, .twist_clamped = 1};
+    span s;
+    int want[GAL_FAMILY_COUNT] = {0, 1, 0, 0};
+    if (make_span(&s, &p, GAL_BY_TENSION, T0, want)) return;
+    gal_rom_opts o;
+    gal_rom_default_opts(&o);
+    o.manifold = 1, o.hyper = 0;
+    gal_rom *m = gal_rom_alloc(s.eq.rod, s.eq.q, &s.md, s.sel, 1, &o, NULL);
+    CHECK(m != NULL && m->r == 1, "%s", gal_error_message());
+    if (m) {
+        double ms = mass * s.eq.unstretched_length / L, kc = EA * pow(GAL_PI, 4) / (2 * ms * ms * pow(L, 5));
+        double eta = 0.5 * sqrt(ms * L / 2), f;
+        CHECK(gal_rom_internal_force(m, &eta, &f) == GAL_OK, "%s", gal_error_message());
+        double k = (f - m->omega2[0] * eta) / pow(eta, 3);
+        printf("    (manifold: cubic coefficient %.4f x Kirchhoff-Carrier)\n", k / kc);
+        CHECK_REL(k, kc, 2e-2);
+        gal_rom_free(m);
+    }
+    free_span(&s);
+    /* the sagged span with torsion: force and tangent */
+    int want2[GAL_FAMILY_COUNT] = {3, 2, 1, 0};
+    if (make_span(&s, &sagged, GAL_BY_SAG, 4.0, want2)) return;
+    m = gal_rom_alloc(s.eq.rod, s.eq.q, &s.md, s.sel, s.r, &o, NULL);
+    CHECK(m != NULL, "%s", gal_error_message());
+    if (!m) { free_span(&s); return; }
+    int r = m->r, n = m->ndof, nq = m->nq;
+    CHECK(r == s.r, "the manifold has the modes' coordinates only (%d of %d)", r, s.r);
+    double x[16], f[16], fp[16], fm[16], Kr[256], *g = malloc(nq * sizeof(double)), *q = malloc(nq * sizeof(double));
+    for (int k = 0; k < r; k++) x[k] = 1.0 * sqrt(sagged.mass * sagged.length) / (k + 1);
+    CHECK(gal_rom_internal_force(m, x, f) == GAL_OK, "%s", gal_error_message());
+    memcpy(m->x, x, r * sizeof(double));
+    gal_rom_reconstruct(m, q, NULL);
+    gal_rod_eval(s.eq.rod, q, NULL, g, NULL);
+    /* P(x) by central differences of the reconstruction */
+    double err = 0, fmx = 0;
+    for (int k = 0; k < r; k++) {
+        double hk = 1e-5 * fabs(x[0]), pr = 0, *qp = malloc(nq * sizeof(double));
+        m->x[k] = x[k] + hk, gal_rom_reconstruct(m, qp, NULL);
+        m->x[k] = x[k] - hk, gal_rom_reconstruct(m, q, NULL);
+        m->x[k] = x[k];
+        for (int d = 0; d < n; d++) {
+            int qi = s.eq.rod->free_q[d];
+            pr += (qp[qi] - q[qi]) / (2 * hk) * g[qi];
+        }
+        free(qp);
+        err = fmax(err, fabs(pr - f[k])), fmx = fmax(fmx, fabs(f[k]));
+    }
+    CHECK(err <= 1e-6 * fmx, "manifold force = P^T grad U: %g of %g", err, fmx);
+    double terr = 0, tmax = 0;
+    { /* the force's derivative by central differences is symmetric: a gradient */
+        for (int j = 0; j < r; j++) {
+            double hj = 1e-4 * fabs(x[0]);
+            x[j] += hj, gal_rom_internal_force(m, x, fp);
+            x[j] -= 2 * hj, gal_rom_internal_force(m, x, fm);
+            x[j] += hj;
+            for (int i = 0; i < r; i++) Kr[i * r + j] = (fp[i] - fm[i]) / (2 * hj);
+        }
+        for (int i = 0; i < r; i++)
+            for (int j = 0; j < i; j++)
+                terr = fmax(terr, fabs(Kr[i * r + j] - Kr[j * r + i])), tmax = fmax(tmax, fabs(Kr[i * r + i]));
+    }
+    CHECK(terr <= 1e-5 * tmax, "the manifold's force is a gradient (symmetric derivative): %g of %g", terr, tmax);
+    free(g), free(q);
+    gal_rom_free(m);
+    free_span(&s);
+}
+
+/* Energy of the manifold model (sampled elements), undamped and unloaded, over 1000 periods. */
+static void test_manifold_energy(void)
+{
+    span s;
+    int want[GAL_FAMILY_COUNT] = {2, 1, 0, 0};
+    gal_rod_params p = sagged;
+    p.elements = 16, p.torsion = 0;
+    if (make_span(&s, &p, GAL_BY_SAG, 4.0, want)) return;
+    gal_rom_opts o;
+    gal_rom_default_opts(&o);
+    o.manifold = 1;
+    double w1 = s.md.mode[s.sel[0]].omega;
+    o.h = 2 * GAL_PI / w1 / 32;
+    gal_rom *m = gal_rom_alloc(s.eq.rod, s.eq.q, &s.md, s.sel, s.r, &o, NULL);
+    CHECK(m != NULL, "%s", gal_error_message());
+    if (!m) { free_span(&s); return; }
+    double U0 = gal_rom_energy(m);
+    for (int k = 0; k < m->r; k++) m->v[k] = 0.3 * sqrt(m->omega2[k]) * sqrt(p.mass * p.length) / (k + 1);
+    double *q = malloc(m->nq * sizeof(double)), *v = malloc(m->nq * sizeof(double));
+    gal_rom_reconstruct(m, q, v);
+    CHECK(gal_rom_start(m, 0, q, v) == GAL_OK, "%s", gal_error_message());
+    double E0 = gal_rom_energy(m), drift = 0;
+    for (int per = 0; per < 1000; per++) {
+        if (gal_rom_advance(m, (per + 1) * 2 * GAL_PI / w1)) { CHECK(0, "%s", gal_error_message()); break; }
+        if (per % 50 == 49) drift = fmax(drift, fabs(gal_rom_energy(m) - E0));
+    }
+    printf("    (manifold, 1000 periods, %ld steps: energy drift %.2e of the motion's energy)\n", m->steps, drift / (E0 - U0));
+    CHECK(drift < 1e-3 * (E0 - U0), "energy drift %g of %g", drift, E0 - U0);
+    free(q), free(v);
+    gal_rom_free(m);
+    free_span(&s);
+}
+
 int main(void)
 {
     RUN(test_step_halving);
@@ -279,5 +389,7 @@ int main(void)
     RUN(test_damping_forces_tangent);
     RUN(test_energy_and_symmetry);
     RUN(test_short_span_against_full);
+    RUN(test_manifold);
+    RUN(test_manifold_energy);
     return CHECK_SUMMARY();
 }

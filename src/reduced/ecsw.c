@@ -10,13 +10,16 @@
 #include <string.h>
 
 #include "reduced/hyper.h"
+#include "reduced/qm.h"
 
 void gal_rom_hyper_free(gal_rom *m)
 {
     gal_rom_hyper *h = m->hyper;
     if (!h) return;
-    for (int s = 0; s < 2; s++)
+    for (int s = 0; s < 2; s++) {
         free(h->set[s].elem), free(h->set[s].w), free(h->set[s].idx), free(h->set[s].uq), free(h->set[s].Vu), free(h->set[s].rw);
+        free(h->set[s].Qz), free(h->set[s].Tt), free(h->set[s].Pc), free(h->set[s].qs);
+    }
     free(h->T); free(h->gu); free(h->Jdd); free(h->fc); free(h->Kc); free(h->snap); free(h->F0);
     free(h);
     m->hyper = NULL;
@@ -45,14 +48,29 @@ static int sample_entries(gal_rom *m)
                 S->idx[k * NQ + a] = d < 0 ? -1 : where[qi[a]];
             }
         }
-        free(S->uq), free(S->Vu);
-        S->uq = malloc((size_t)(nu ? nu : 1) * sizeof(int)), S->Vu = malloc((size_t)(nu ? nu : 1) * r * sizeof(double));
+        free(S->uq), free(S->Vu), free(S->Qz), free(S->Tt), free(S->Pc), free(S->qs);
+        S->Qz = S->Tt = S->Pc = S->qs = NULL;
+        int nu1 = nu ? nu : 1;
+        S->uq = malloc((size_t)nu1 * sizeof(int)), S->Vu = malloc((size_t)nu1 * r * sizeof(double));
         if (!S->uq || !S->Vu) { free(where); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample"); }
+        if (m->qm) {
+            int np = m->qm->np;
+            S->Qz = malloc((size_t)nu1 * (r + np) * sizeof(double)), S->Tt = malloc((size_t)nu1 * r * r * sizeof(double));
+            S->Pc = malloc((size_t)nu1 * r * sizeof(double)), S->qs = malloc((size_t)nu1 * sizeof(double));
+            if (!S->Qz || !S->Tt || !S->Pc || !S->qs) { free(where); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample"); }
+        }
         for (int qk = 0; qk < m->nq; qk++) {
             int u = where[qk];
             if (u < 0) continue;
             S->uq[u] = qk;
             for (int k = 0; k < r; k++) S->Vu[(size_t)u * r + k] = m->V[(size_t)k * n + rod->dof[qk]];
+            if (!m->qm) continue;
+            const double *Th = m->qm->Th;
+            for (int c = 0; c < r + m->qm->np; c++)
+                S->Qz[(size_t)c * nu + u] = c < r ? m->V[(size_t)c * n + rod->dof[qk]] : Th[(size_t)(c - r) * n + rod->dof[qk]];
+            for (int j = 0; j < r; j++)
+                for (int k = 0; k < r; k++)
+                    S->Tt[((size_t)j * r + k) * nu + u] = Th[(size_t)m->qm->pair[k * r + j] * n + rod->dof[qk]];
         }
         S->nu = nu;
     }
@@ -60,9 +78,9 @@ static int sample_entries(gal_rom *m)
     return GAL_OK;
 }
 
-/* Column e of a snapshot block: V_e^T g_e for element e's local gradient g (11 or 7 entries
- * mapped like gal_rod_element_q) at the reconstructed state m->q. */
-static void project_local(const gal_rom *m, const int *qi, const double *g, int nloc, double *col)
+/* Column e of a snapshot block: B_e^T g_e for element e's local gradient g (11 or 7 entries
+ * mapped like gal_rod_element_q) at the reconstructed state m->q; B the tangent basis there. */
+static void project_local(const gal_rom *m, const double *B, const int *qi, const double *g, int nloc, double *col)
 {
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r;
@@ -72,12 +90,13 @@ static void project_local(const gal_rom *m, const int *qi, const double *g, int 
         int qa = qi[nloc == 7 ? load_to_el[a] : a];
         int d = qa < 0 ? -1 : rod->dof[qa];
         if (d < 0 || g[a] == 0) continue;
-        for (int k = 0; k < r; k++) col[k] += m->V[(size_t)k * n + d] * g[a];
+        for (int k = 0; k < r; k++) col[k] += B[(size_t)k * n + d] * g[a];
     }
 }
 
 
-/* Kr = V_e^T H_e V_e (r x r) of element e's Hessian at the state in m->q, and its gradient's
+/* Kr = V_e^T H_e V_e (r x r) of element e's Hessian at the state in m->q (the basis at the
+ * equilibrium: V, on the manifold Phi plus the curvature sum_a g_a theta_a), and its gradient's
  * projection into col (r). */
 static int element_reduced(gal_rom *m, int e, double *col, double *Kr)
 {
@@ -87,7 +106,7 @@ static int element_reduced(gal_rom *m, int e, double *col, double *Kr)
     gal_rod_element_q(rod, e, qi);
     int st = gal_rod_element_eval(rod, e, m->q, &U, g, H);
     if (st) return st;
-    project_local(m, qi, g, NQ, col);
+    project_local(m, m->V, qi, g, NQ, col);
     for (int a = 0; a < NQ; a++) d[a] = qi[a] < 0 ? -1 : rod->dof[qi[a]];
     for (int a = 0; a < NQ; a++) { /* T = H V_e */
         for (int j = 0; j < r; j++) T[a * r + j] = 0;
@@ -102,6 +121,11 @@ static int element_reduced(gal_rom *m, int e, double *col, double *Kr)
                 double vi = m->V[(size_t)i * n + d[a]];
                 for (int j = 0; j < r; j++) Kr[i * r + j] += vi * T[a * r + j];
             }
+    if (m->qm)
+        for (int a = 0; a < NQ; a++)
+            if (d[a] >= 0 && g[a] != 0)
+                for (int i = 0; i < r; i++)
+                    for (int j = 0; j < r; j++) Kr[i * r + j] += g[a] * m->qm->Th[(size_t)m->qm->pair[i * r + j] * n + d[a]];
     return GAL_OK;
 }
 
@@ -117,16 +141,17 @@ static int snapshots(gal_rom *m, int set, double *A, double *b)
     for (int s = 0; s < h->ns; s++) {
         const double *x = h->snap + (size_t)s * (2 * r + 1), *v = x + r, t = x[2 * r];
         gal_rom_reconstruct_at(m, x, v);
+        const double *B = gal_rom_basis_at(m, x);
         for (int e = 0; e < nel; e++) {
             double *a = A + (size_t)e * rows + (size_t)s * r;
             int st;
             gal_rod_element_q(rod, e, qi);
             if (set == 0) {
                 if ((st = gal_rod_element_eval(rod, e, m->q, &U, g, NULL))) return st;
-                project_local(m, qi, g, NQ, a);
+                project_local(m, B, qi, g, NQ, a);
             } else {
                 if ((st = m->force.element(m->force.ctx, t, m->q, m->vq, e, g))) return st;
-                project_local(m, qi, g, 7, a);
+                project_local(m, B, qi, g, 7, a);
             }
         }
     }
@@ -243,10 +268,11 @@ static int constants(gal_rom *m)
     int r = m->r, qi[GAL_ROD_ELEMENT_NQ];
     double U0, Ue, g[GAL_ROD_ELEMENT_NQ], *col = m->fr, *Ke = m->Kr; /* Kr: scratch, refreshed after */
     gal_rom_reconstruct_at(m, NULL, NULL);
-    int st = gal_rod_eval(rod, m->q, &U0, NULL, NULL);
+    int st = gal_rod_eval(rod, m->q, &U0, m->gq, NULL);
     if (st) return st;
     memcpy(h->fc, h->F0, (size_t)r * sizeof(double));
     memcpy(h->Kc, m->K0r, (size_t)r * r * sizeof(double));
+    if (m->qm) gal_rom_qm_curvature(m, m->gq, h->Kc); /* the exact Hessian at the equilibrium */
     h->Uc = U0;
     const gal_rom_hyper_set *S = &h->set[0];
     for (int k = 0; k < S->n; k++) {
@@ -346,9 +372,10 @@ static int exact_loads(gal_rom *m, double *f)
     memset(m->fq, 0, (size_t)m->nq * sizeof(double));
     int st = m->force.eval(m->force.ctx, m->t, m->q, m->vq, m->fq);
     if (st) return st;
+    const double *B = gal_rom_basis_at(m, m->x);
     for (int k = 0; k < m->r; k++) {
         double s = 0;
-        for (int d = 0; d < n; d++) s += m->V[(size_t)k * n + d] * m->fq[rod->free_q[d]];
+        for (int d = 0; d < n; d++) s += B[(size_t)k * n + d] * m->fq[rod->free_q[d]];
         f[k] = s;
     }
     return GAL_OK;

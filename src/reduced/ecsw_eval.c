@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "reduced/hyper.h"
+#include "reduced/qm.h"
 
 /* a . b with four partial sums (the loop is latency-bound otherwise) */
 static double dot(const double *a, const double *b, int n)
@@ -21,25 +22,74 @@ static double dot(const double *a, const double *b, int n)
     return (s0 + s1) + (s2 + s3);
 }
 
-/* q = q_eq + V x (and v = V xd when xd) at sample S's entries of m->q (m->vq). */
-static void reconstruct(gal_rom *m, const gal_rom_hyper_set *h, const double *x, const double *xd)
+/* q = q_eq + V x (and v = V xd when xd) at sample S's entries of m->q (m->vq); returns the rows
+ * of the tangent basis there (nu x r): V's, or on the manifold (qm.h) P(x)'s, with
+ * q = q_eq + Phi x + Theta mono, P = Phi + Theta(x, .) (loops over the entries: no dependence
+ * chains over the few coordinates). */
+static const double *reconstruct(gal_rom *m, gal_rom_hyper_set *h, const double *x, const double *xd)
 {
-    int r = m->r;
-    for (int u = 0; u < h->nu; u++) {
-        const double *vu = h->Vu + (size_t)u * r;
-        m->q[h->uq[u]] = m->q_eq[h->uq[u]] + dot(vu, x, r);
-        if (xd) m->vq[h->uq[u]] = dot(vu, xd, r);
+    int r = m->r, nu = h->nu;
+    if (!m->qm) {
+        for (int u = 0; u < nu; u++) {
+            const double *vu = h->Vu + (size_t)u * r;
+            m->q[h->uq[u]] = m->q_eq[h->uq[u]] + dot(vu, x, r);
+            if (xd) m->vq[h->uq[u]] = dot(vu, xd, r);
+        }
+        return h->Vu;
     }
+    int np = m->qm->np, rn = r * nu;
+    double z[64 + 64 * 65 / 2], *qs = h->qs, *Pc = h->Pc;
+    memcpy(z, x, (size_t)r * sizeof(double));
+    gal_rom_qm_mono(m, x, NULL, NULL, z + r, NULL, NULL);
+    memset(qs, 0, (size_t)nu * sizeof(double));
+    for (int c = 0; c < r + np; c++) {
+        const double *col = h->Qz + (size_t)c * nu;
+        double zc = z[c];
+        if (zc != 0)
+            for (int u = 0; u < nu; u++) qs[u] += col[u] * zc;
+    }
+    for (int u = 0; u < nu; u++) m->q[h->uq[u]] = m->q_eq[h->uq[u]] + qs[u];
+    memcpy(Pc, h->Qz, (size_t)rn * sizeof(double));
+    for (int j = 0; j < r; j++) {
+        const double *t = h->Tt + (size_t)j * rn;
+        double xj = x[j];
+        if (xj != 0)
+            for (int i = 0; i < rn; i++) Pc[i] += t[i] * xj;
+    }
+    for (int k = 0; k < r; k++)
+        for (int u = 0; u < nu; u++) h->Vu[(size_t)u * r + k] = Pc[(size_t)k * nu + u];
+    if (xd) {
+        memset(qs, 0, (size_t)nu * sizeof(double));
+        for (int k = 0; k < r; k++) {
+            const double *pk = Pc + (size_t)k * nu;
+            for (int u = 0; u < nu; u++) qs[u] += pk[u] * xd[k];
+        }
+        for (int u = 0; u < nu; u++) m->vq[h->uq[u]] = qs[u];
+    }
+    return h->Vu;
+}
+
+/* Kr += sum_u gu_u theta_u (the manifold's curvature; upper triangle). */
+static void curvature(const gal_rom *m, const gal_rom_hyper_set *S, const double *gu, double *Kr)
+{
+    int r = m->r, nu = S->nu;
+    for (int j = 0, p = 0; j < r; j++)
+        for (int i = 0; i <= j; i++, p++) {
+            const double *col = S->Qz + (size_t)(r + p) * nu;
+            double s = 0;
+            for (int u = 0; u < nu; u++) s += gu[u] * col[u];
+            Kr[i * r + j] += s;
+        }
 }
 
 int gal_rom_hyper_internal(gal_rom *m, const double *x, double *f, double *Kr)
 {
-    const gal_rom_hyper *h = m->hyper;
-    const gal_rom_hyper_set *S = &h->set[0];
+    gal_rom_hyper *h = m->hyper;
+    gal_rom_hyper_set *S = &h->set[0];
     const int NQ = GAL_ROD_ELEMENT_NQ;
     int r = m->r;
     double U = h->Uc, g[GAL_ROD_ELEMENT_NQ], H[GAL_ROD_ELEMENT_NQ * GAL_ROD_ELEMENT_NQ];
-    reconstruct(m, S, x, NULL);
+    const double *Bu = reconstruct(m, S, x, NULL);
     for (int i = 0; i < r; i++) { /* f = f_c + K_c x, U = U_c + f_c.x + x.K_c x / 2 */
         double kx = dot(h->Kc + (size_t)i * r, x, r);
         f[i] = h->fc[i] + kx, U += (h->fc[i] + 0.5 * kx) * x[i];
@@ -65,12 +115,12 @@ int gal_rom_hyper_internal(gal_rom *m, const double *x, double *f, double *Kr)
             for (int q = 0; q < nl; q++) {
                 double hpq = w * H[loc[p] * NQ + loc[q]];
                 if (hpq == 0) continue;
-                const double *vq = S->Vu + (size_t)idx[loc[q]] * r;
+                const double *vq = Bu + (size_t)idx[loc[q]] * r;
                 for (int j = 0; j < r; j++) tp[j] += hpq * vq[j];
             }
         }
         for (int p = 0; p < nl; p++) { /* Kr += V_e^T T, the upper triangle */
-            const double *vp = S->Vu + (size_t)idx[loc[p]] * r, *tp = T + (size_t)p * r;
+            const double *vp = Bu + (size_t)idx[loc[p]] * r, *tp = T + (size_t)p * r;
             for (int i = 0; i < r; i++) {
                 double vi = vp[i];
                 if (vi == 0) continue;
@@ -79,8 +129,9 @@ int gal_rom_hyper_internal(gal_rom *m, const double *x, double *f, double *Kr)
             }
         }
     }
+    if (Kr && m->qm) curvature(m, S, gu, Kr);
     for (int u = 0; u < S->nu; u++) { /* f += V_S^T gu */
-        const double *vu = S->Vu + (size_t)u * r;
+        const double *vu = Bu + (size_t)u * r;
         double gv = gu[u];
         for (int i = 0; i < r; i++) f[i] += gv * vu[i];
     }
@@ -94,12 +145,12 @@ int gal_rom_hyper_internal(gal_rom *m, const double *x, double *f, double *Kr)
 
 int gal_rom_hyper_external(gal_rom *m, double t, const double *x, const double *xd, double *f)
 {
-    const gal_rom_hyper *h = m->hyper;
-    const gal_rom_hyper_set *S = &h->set[1];
+    gal_rom_hyper *h = m->hyper;
+    gal_rom_hyper_set *S = &h->set[1];
     static const int load_to_el[7] = {0, 1, 2, 3, 4, 5, 9};
     int r = m->r;
     memset(f, 0, (size_t)r * sizeof(double));
-    reconstruct(m, S, x, xd);
+    const double *Bu = reconstruct(m, S, x, xd);
     double *gu = m->hyper->gu;
     memset(gu, 0, (size_t)S->nu * sizeof(double));
     for (int k = 0; k < S->n; k++) {
@@ -113,7 +164,7 @@ int gal_rom_hyper_external(gal_rom *m, double t, const double *x, const double *
         }
     }
     for (int u = 0; u < S->nu; u++) {
-        const double *vu = S->Vu + (size_t)u * r;
+        const double *vu = Bu + (size_t)u * r;
         double gv = gu[u];
         for (int i = 0; i < r; i++) f[i] += gv * vu[i];
     }

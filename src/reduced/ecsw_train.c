@@ -25,17 +25,12 @@ int gal_rom_exact_force(gal_rom *m, const double *x, double *f)
 {
     const gal_rod *rod = m->rod;
     int n = m->ndof;
-    memcpy(m->q, m->q_eq, (size_t)m->nq * sizeof(double));
-    for (int d = 0; d < n; d++) {
-        double s = 0;
-        for (int k = 0; k < m->r; k++) s += m->V[(size_t)k * n + d] * x[k];
-        m->q[rod->free_q[d]] += s;
-    }
-    int st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL);
+    int st = gal_rod_eval(rod, gal_rom_reconstruct_q(m, x), NULL, m->gq, NULL);
     if (st) return st;
+    const double *B = gal_rom_basis_at(m, x);
     for (int k = 0; k < m->r; k++) {
         double s = 0;
-        for (int d = 0; d < n; d++) s += m->V[(size_t)k * n + d] * m->gq[rod->free_q[d]];
+        for (int d = 0; d < n; d++) s += B[(size_t)k * n + d] * m->gq[rod->free_q[d]];
         f[k] = s;
     }
     return GAL_OK;

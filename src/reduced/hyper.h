@@ -14,7 +14,13 @@ typedef struct gal_rom_hyper_set {
     int *idx;
     int nu;                    /* the sample's free configuration entries */
     int *uq;                   /* nu: their configuration indices */
-    double *Vu;                /* nu x r, row-major: V's rows there */
+    double *Vu;                /* nu x r, row-major: V's rows there (the tangent basis's rows at the
+                                * last state on the manifold) */
+    /* the manifold (qm.h), laid out for loops over the entries: */
+    double *Qz;                /* (r + np) x nu: Phi's columns, then Theta's pairs, at the entries */
+    double *Tt;                /* r x (r x nu): Tt[j][k nu + u] = Theta_u(k, j) */
+    double *Pc;                /* r x nu: P(x) at the entries, column-major */
+    double *qs;                /* nu: scratch */
     double fit_error;          /* the NNLS residual, relative */
     double *rw;                /* r: the row weights of the fit and the check (1 / RMS of each
                                 * coordinate's force over the training states) */

@@ -8,17 +8,27 @@
 #include "gallop/base/core.h"
 #include "gallop/reduced/ecsw.h"
 #include "reduced/hyper.h"
+#include "reduced/qm.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* q = q_eq + V x over the free dofs (m->q); the velocity V xd into m->vq when xd != NULL. */
+/* q = q_eq + V x over the free dofs (m->q); the velocity V xd into m->vq when xd != NULL (on the
+ * manifold: q_eq + u(x), P(x) xd). */
 static void reconstruct(gal_rom *m, const double *x, const double *xd)
 {
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r;
     memcpy(m->q, m->q_eq, (size_t)m->nq * sizeof(double));
+    if (m->qm) {
+        gal_rom_qm_displacement(m, x, xd, m->wn, m->wn2);
+        for (int d = 0; d < n; d++) {
+            m->q[rod->free_q[d]] += m->wn[d];
+            if (xd) m->vq[rod->free_q[d]] = m->wn2[d];
+        }
+        return;
+    }
     for (int d = 0; d < n; d++) {
         double s = 0, sv = 0;
         for (int k = 0; k < r; k++) {
@@ -31,15 +41,54 @@ static void reconstruct(gal_rom *m, const double *x, const double *xd)
     }
 }
 
-/* f = V^T (free part of a configuration-sized vector g) */
-static void project(const gal_rom *m, const double *g, double *f)
+const double *gal_rom_basis_at(gal_rom *m, const double *x)
+{
+    return m->qm ? gal_rom_qm_basis(m, x) : m->V;
+}
+
+/* f = B^T (free part of a configuration-sized vector g), B the tangent basis at x */
+static void project(gal_rom *m, const double *x, const double *g, double *f)
 {
     int n = m->ndof;
+    const double *B = gal_rom_basis_at(m, x);
     for (int k = 0; k < m->r; k++) {
-        const double *vk = m->V + (size_t)k * n;
+        const double *vk = B + (size_t)k * n;
         double s = 0;
         for (int d = 0; d < n; d++) s += vk[d] * g[m->rod->free_q[d]];
         f[k] = s;
+    }
+}
+
+void gal_rom_full_rates(gal_rom *m, double *vf, double *af, double *u)
+{
+    int n = m->ndof, r = m->r;
+    if (m->qm) { /* v = P x', a = P x'' + Theta(x', x') */
+        const gal_rom_qm *qm = m->qm;
+        int np = qm->np;
+        double *mono = qm->mono, *dmono = mono + np, *ddmono = dmono + np;
+        const double *P = gal_rom_qm_basis(m, m->x);
+        gal_rom_qm_mono(m, m->x, m->v, m->a, mono, dmono, ddmono);
+        for (int d = 0; d < n; d++) {
+            double sv = 0, sa = 0, su = 0;
+            for (int k = 0; k < r; k++) {
+                double vk = m->V[(size_t)k * n + d];
+                sv += P[(size_t)k * n + d] * m->v[k], sa += vk * m->a[k], su += vk * m->x[k];
+            }
+            for (int p = 0; p < np; p++) {
+                double t = qm->Th[(size_t)p * n + d];
+                sa += t * ddmono[p], su += t * mono[p];
+            }
+            vf[d] = sv, af[d] = sa, u[d] = su;
+        }
+        return;
+    }
+    for (int d = 0; d < n; d++) {
+        double sv = 0, sa = 0, su = 0;
+        for (int k = 0; k < r; k++) {
+            double vk = m->V[(size_t)k * n + d];
+            sv += vk * m->v[k], sa += vk * m->a[k], su += vk * m->x[k];
+        }
+        vf[d] = sv, af[d] = sa, u[d] = su;
     }
 }
 
@@ -68,9 +117,20 @@ static int internal(gal_rom *m, const double *x, double *f, double *Kr)
     reconstruct(m, x, NULL);
     int st = gal_rod_eval(m->rod, m->q, &m->U1, m->gq, Kr ? m->K : NULL);
     if (st) return st;
-    project(m, m->gq, f);
+    project(m, x, m->gq, f);
     if (Kr) {
-        gal_rom_project_tangent(m, m->K, Kr, m->wn);
+        if (m->qm) { /* P^T K P + the manifold's curvature */
+            const double *P = m->qm->P; /* at x, from project */
+            for (int j = 0; j < m->r; j++) {
+                gal_csc_symv(m->K, P + (size_t)j * m->ndof, m->wn);
+                for (int i = 0; i <= j; i++) {
+                    double s = 0;
+                    for (int d = 0; d < m->ndof; d++) s += P[(size_t)i * m->ndof + d] * m->wn[d];
+                    Kr[i * m->r + j] = Kr[j * m->r + i] = s;
+                }
+            }
+            gal_rom_qm_curvature(m, m->gq, Kr);
+        } else gal_rom_project_tangent(m, m->K, Kr, m->wn);
         m->tangents++;
     }
     return GAL_OK;
@@ -86,7 +146,7 @@ static int external(gal_rom *m, double t, const double *x, const double *xd, dou
     memset(m->fq, 0, (size_t)m->nq * sizeof(double));
     int st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
     if (st) return st;
-    project(m, m->fq, f);
+    project(m, x, m->fq, f);
     return GAL_OK;
 }
 
@@ -132,8 +192,12 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
     int n = m->ndof, r = m->r;
     m->t = t;
     m->hJ = 0, m->next_hyper_check = t + m->o.hyper_check_interval;
-    /* x = V^T M (q - q_eq), x' = V^T M v */
-    for (int s = 0; s < 2; s++) {
+    /* x = V^T M (q - q_eq), x' = V^T M v (on the manifold: the closest state on it) */
+    if (m->qm) {
+        int st = gal_rom_qm_project_state(m, q, v, m->x, m->v);
+        if (st) return st;
+    }
+    for (int s = 0; s < 2 && !m->qm; s++) {
         double *dst = s ? m->v : m->x;
         if (s && !v) { memset(dst, 0, (size_t)r * sizeof(double)); break; }
         for (int d = 0; d < n; d++) {
@@ -305,6 +369,16 @@ double gal_rom_entry(const gal_rom *m, int qi, int rate)
     int d = m->rod->dof[qi];
     double s = rate ? 0 : m->q_eq[qi];
     if (d < 0) return s;
+    if (m->qm) { /* u_d(x) = Phi_d x + Theta_d mono, rate P_d(x) x' */
+        const gal_rom_qm *qm = m->qm;
+        int n = m->ndof, nm = m->nmodes;
+        for (int i = 0; i < nm; i++) {
+            double pi = m->V[(size_t)i * n + d], ti = 0;
+            for (int j = 0; j < nm; j++) ti += qm->Th[(size_t)qm->pair[i * nm + j] * n + d] * m->x[j];
+            s += rate ? (pi + ti) * m->v[i] : (pi + 0.5 * ti) * m->x[i];
+        }
+        return s;
+    }
     const double *y = rate ? m->v : m->x;
     for (int k = 0; k < m->r; k++) s += m->V[(size_t)k * m->ndof + d] * y[k];
     return s;

@@ -12,6 +12,7 @@
 
 #include "base/chol.h"
 #include "gallop/reduced/ecsw.h"
+#include "reduced/qm.h"
 
 void gal_rom_default_opts(gal_rom_opts *o)
 {
@@ -32,6 +33,7 @@ gal_rom *gal_rom_free(gal_rom *m)
 {
     if (!m) return NULL;
     gal_rom_hyper_free(m);
+    gal_rom_qm_free(m);
     free(m->fr);
     free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
     gal_csc_free(m->K0); gal_csc_free(m->K);
@@ -168,7 +170,11 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
         orth_append(rod, m->V, MV, &m->r, c, c + n, 1e-3);
         if (m->r == r0) { gal_error(GAL_EFAIL, "reduced model: mode %d repeats the others", sel[k]); goto fail; }
     }
-    if (m->o.derivatives && derivatives(m, MV, nsel)) goto fail;
+    if (m->o.manifold && m->o.nextra > 0) {
+        gal_error(GAL_EINPUT, "reduced model: the quadratic manifold takes no extra basis vectors");
+        goto fail;
+    }
+    if (m->o.derivatives && (m->o.manifold ? gal_rom_qm_build(m) : derivatives(m, MV, nsel))) goto fail;
     for (int k = 0; k < m->o.nextra; k++) {
         memcpy(c, m->o.extra + (size_t)k * n, (size_t)n * sizeof(double));
         orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol);

@@ -57,18 +57,14 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
 int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
 {
     const gal_rod *rod = m->rod;
-    int n = m->ndof, r = m->r, st = GAL_OK;
+    int n = m->ndof, st = GAL_OK;
     memset(chk, 0, sizeof *chk);
-    double *w = calloc((size_t)(NTERM + 2) * n, sizeof(double));
+    double *w = calloc((size_t)(NTERM + 3) * n, sizeof(double));
     if (!w) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the residual");
-    double *y[NTERM], *vf = w + NTERM * n, *af = vf + n;
+    double *y[NTERM], *vf = w + NTERM * n, *af = vf + n, *u = af + n;
     for (int k = 0; k < NTERM; k++) y[k] = w + (size_t)k * n;
-    /* the full velocity and acceleration over the free dofs */
-    for (int d = 0; d < n; d++) {
-        double sv = 0, sa = 0;
-        for (int k = 0; k < r; k++) sv += m->V[(size_t)k * n + d] * m->v[k], sa += m->V[(size_t)k * n + d] * m->a[k];
-        vf[d] = sv, af[d] = sa;
-    }
+    /* the full velocity, acceleration and displacement over the free dofs */
+    gal_rom_full_rates(m, vf, af, u);
     gal_rod_mass_mult(rod, af, y[TERM_MA]);
     if (m->o.damping) gal_damping_apply(m->o.damping, vf, y[TERM_CV]); /* y is zeroed */
     gal_rom_reconstruct(m, NULL, NULL); /* into m->q, m->vq */
@@ -81,11 +77,7 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     /* du = K0^-1 R and the displacement u = V x */
     if ((st = gal_chol_solve(m->chol0, y[TERM_R], y[TERM_R]))) goto done;
     if (du) memcpy(du, y[TERM_R], (size_t)n * sizeof(double));
-    for (int d = 0; d < n; d++) {
-        double s = 0;
-        for (int k = 0; k < r; k++) s += m->V[(size_t)k * n + d] * m->x[k];
-        y[TERM_MA][d] = s;
-    }
+    memcpy(y[TERM_MA], u, (size_t)n * sizeof(double));
     double acc[2][GAL_FAMILY_COUNT] = {{0}}, total = 0;
     accumulate(m, y[TERM_R], rod->mdiag, acc[0]);
     accumulate(m, y[TERM_MA], rod->mdiag, acc[1]);

@@ -12,6 +12,7 @@ void gal_rom_sim_default_opts(gal_rom_sim_opts *o)
 {
     memset(o, 0, sizeof *o);
     o->derivatives = 1;
+    o->manifold = -1;
     o->h = 0;
     o->check_interval = 1.0;
     o->check_from = 0;
@@ -103,6 +104,7 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
     ro.derivatives = o->derivatives;
+    if (o->manifold >= 0) ro.manifold = o->manifold;
     ro.h = dt_out / sub;
     ro.rho_inf = sc->simulation.rho_inf;
     ro.damping = d->damping; /* the structural damping of the pipeline */

@@ -30,11 +30,14 @@ static double med3(double a, double b, double c)
 }
 
 typedef struct {
-    int elements, sample, loads;
-    double setup_s, step_us, full_step_us, ratio; /* ratio: full over reduced per simulated second */
+    int elements, sample, loads, basis;
+    double setup_s, step_us, full_step_us, ratio, its, evals;
+    long tangents; /* ratio: full over reduced per simulated second */
 } row;
 
 /* One mesh: set-up, then three reduced builds and runs of `seconds`, one full run of as long. */
+static int manifold = -1; /* --manifold 0|1 (-1: the default) */
+
 static int one(const char *path, const char *const *ov, int nov, int nel, double seconds, row *out)
 {
     char e[64], d[64];
@@ -61,6 +64,7 @@ static int one(const char *path, const char *const *ov, int nov, int nel, double
     ro.h = dt_out / ceil(dt_out / h - 1e-9);
     ro.rho_inf = sc.simulation.rho_inf;
     ro.damping = dt->damping;
+    if (manifold >= 0) ro.manifold = manifold;
     gal_force F = {0};
     if (dt->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&dt->loads;
     double ts[3], tr[3];
@@ -73,9 +77,11 @@ static int one(const char *path, const char *const *ov, int nov, int nel, double
         t0 = cpu();
         st = gal_rom_advance(m, seconds);
         tr[rep] = (cpu() - t0) / fmax(m->steps, 1);
+        out->its = (double)m->newton_iterations / fmax(m->steps, 1), out->tangents = m->tangents;
+        out->evals = (double)m->force_evaluations / fmax(m->steps, 1);
         gal_rom_hyper_info hi;
         gal_rom_hyper_get_info(m, &hi);
-        out->sample = hi.elements, out->loads = hi.load_elements;
+        out->sample = hi.elements, out->loads = hi.load_elements, out->basis = m->r;
         if (st) printf("%s: reduced: %s\n", path, gal_error_message());
         gal_rom_free(m);
     }
@@ -87,9 +93,10 @@ static int one(const char *path, const char *const *ov, int nov, int nel, double
         out->elements = nel, out->setup_s = med3(ts[0], ts[1], ts[2]), out->step_us = 1e6 * med3(tr[0], tr[1], tr[2]);
         out->ratio = out->full_step_us * rf.steps / (out->step_us * seconds / ro.h);
         printf("ROW|%s|n=%d|sample %d energy elements of %d, %d load elements|reduced set-up %.3f s|"
-               "reduced %.1f us/step, full %.1f us/step (%ld steps of %.4g s)|x%.1f per simulated second\n",
+               "reduced %.1f us/step, full %.1f us/step (%ld steps of %.4g s)|x%.1f per simulated second|"
+               "basis %d, %.2f Newton iterations and %.2f load evaluations a step, %ld tangents\n",
                path, nel, out->sample, 2 * nel - 1, out->loads, out->setup_s, out->step_us, out->full_step_us,
-               rf.steps, ro.h, out->ratio);
+               rf.steps, ro.h, out->ratio, out->basis, out->its, out->evals, out->tangents);
         fflush(stdout);
         gal_sim_result_clear(&rf);
     }
@@ -105,6 +112,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 32) ov[nov++] = argv[++i];
         else if (!strcmp(argv[i], "--seconds") && i + 1 < argc) seconds = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--manifold") && i + 1 < argc) manifold = atoi(argv[++i]);
         else scene = argv[i];
     }
     int mesh[3] = {100, 400, 1000};

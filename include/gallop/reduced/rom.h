@@ -29,6 +29,11 @@ extern "C" {
 
 typedef struct gal_rom_opts {
     int derivatives;        /* 1: add the static modal derivatives (default); 0: linear modes only */
+    int manifold;           /* 1: the modal derivatives as the quadratic term of a manifold
+                             * q = q_eq + Phi eta + 1/2 Theta(eta, eta) in the modal coordinates
+                             * eta alone (Jain et al. 2017; their inertia dropped: the mass stays
+                             * Phi^T M Phi = I, a conservative system in eta); 0: a linear basis
+                             * V = [Phi, Theta] (the modal derivatives as coordinates) */
     double deflation_tol;   /* drop a basis vector whose M-norm falls below this share after
                              * orthogonalization; default 1e-6 */
     double fd_step_m;       /* m: largest translation of the finite-difference steps; default 1e-3 */
@@ -98,6 +103,7 @@ typedef struct gal_rom {
     long halvings;          /* steps retried as two halves after Newton failed */
     double build_time_s;
     struct gal_rom_hyper *hyper; /* the sample (ecsw.h), or NULL: every element */
+    struct gal_rom_qm *qm;  /* o.manifold: the quadratic term (r = nmodes, V = Phi), else NULL */
     double next_hyper_check; /* s */
     double hJ;              /* s: the time step of the factorized iteration matrix J (0: none) */
     double *fr;             /* r: scratch */
@@ -122,6 +128,12 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v);
 int gal_rom_step(gal_rom *m);
 /* Steps until t >= t_target - h/1000. */
 int gal_rom_advance(gal_rom *m, double t_target);
+
+/* Over the free dofs at the state: the velocity vf, the acceleration af and the displacement u
+ * from the equilibrium (V x', V x'', V x; on the manifold P x', P x'' + Theta(x', x'), u(x)). */
+void gal_rom_full_rates(gal_rom *m, double *vf, double *af, double *u);
+/* The tangent basis at x (ndof x r, column-major): V, or P(x) on the manifold (held by m). */
+const double *gal_rom_basis_at(gal_rom *m, const double *x);
 
 /* The reconstructed full state: q = q_eq + V x, v = V x' (configuration-sized; either may be NULL). */
 void gal_rom_reconstruct(const gal_rom *m, double *q, double *v);

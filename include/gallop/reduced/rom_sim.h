@@ -14,6 +14,7 @@ extern "C" {
 
 typedef struct gal_rom_sim_opts {
     int derivatives;          /* basis with the modal derivatives (1, default) or modes only (0) */
+    int manifold;             /* gal_rom_opts.manifold (-1, default: gal_rom_default_opts') */
     double h;                 /* s: time step; <= 0: the full model's */
     double check_interval;    /* s: residual check every so often (default 1) */
     double check_from;        /* s: checks start then (default 0) */

@@ -1,0 +1,212 @@
+/* qm.c: the quadratic manifold of the recomputed reduced model (qm.h): the unnormalized static
+ * modal derivatives theta_ij = -K0^-1 (dK/d eta_j) phi_i (central differences of the tangent, one
+ * factorization of K0), the manifold q = q_eq + Phi eta + 1/2 Theta(eta, eta), its tangent basis
+ * P(eta) = Phi + Theta(eta, .), its curvature term in the reduced tangent, and the projection of a
+ * full state onto it (Gauss-Newton in the mass norm). */
+#include "reduced/qm.h"
+#include "gallop/base/core.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/chol.h"
+
+void gal_rom_qm_free(gal_rom *m)
+{
+    gal_rom_qm *qm = m->qm;
+    if (!qm) return;
+    free(qm->pair); free(qm->Th); free(qm->P); free(qm->mono); free(qm->M);
+    free(qm);
+    m->qm = NULL;
+}
+
+int gal_rom_qm_build(gal_rom *m)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, nq = m->nq, nm = m->nmodes, st = GAL_OK;
+    if (nm > 64) return gal_error(GAL_EINPUT, "reduced model: the manifold takes at most 64 modes (%d selected)", nm);
+    gal_rom_qm *qm = calloc(1, sizeof *qm);
+    if (!qm) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the manifold");
+    m->qm = qm;
+    qm->np = nm * (nm + 1) / 2;
+    qm->pair = malloc((size_t)nm * nm * sizeof(int));
+    qm->Th = malloc((size_t)n * qm->np * sizeof(double)), qm->P = malloc((size_t)n * nm * sizeof(double));
+    qm->mono = malloc((size_t)3 * qm->np * sizeof(double)), qm->M = malloc((size_t)nm * nm * sizeof(double));
+    gal_csc *Kp = gal_csc_clone(rod->K), *Km = gal_csc_clone(rod->K);
+    double *w = malloc((size_t)2 * n * sizeof(double)), *qp = malloc((size_t)nq * sizeof(double));
+    if (!qm->pair || !qm->Th || !qm->P || !qm->mono || !qm->M || !Kp || !Km || !w || !qp) {
+        st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the manifold");
+        goto done;
+    }
+    for (int j = 0, p = 0; j < nm; j++)
+        for (int i = 0; i <= j; i++, p++) qm->pair[i * nm + j] = qm->pair[j * nm + i] = p;
+    for (int j = 0; j < nm && !st; j++) {
+        const double *pj = m->V + (size_t)j * n;
+        double mx = 0;
+        for (int d = 0; d < n; d++) mx = fmax(mx, fabs(pj[d]));
+        double e = m->o.fd_step_m / mx;
+        for (int s = 0; s < 2 && !st; s++) {
+            memcpy(qp, m->q_eq, (size_t)nq * sizeof(double));
+            for (int d = 0; d < n; d++) qp[rod->free_q[d]] += (s ? -e : e) * pj[d];
+            st = gal_rod_eval(rod, qp, NULL, NULL, s ? Km : Kp);
+        }
+        for (int i = 0; i <= j && !st; i++) {
+            double *th = qm->Th + (size_t)qm->pair[i * nm + j] * n;
+            gal_csc_symv(Kp, m->V + (size_t)i * n, w);
+            gal_csc_symv(Km, m->V + (size_t)i * n, w + n);
+            for (int d = 0; d < n; d++) w[d] = -(w[d] - w[n + d]) / (2 * e);
+            st = gal_chol_solve(m->chol0, w, th);
+            { /* less its modal content (M-orthogonal to Phi): the modes' own response stays
+               * dynamic, x = Phi^T M u exactly (measured: condor_150 vertical p-p 0.33 m with the
+               * modal content on the manifold, 0.474 without, full 0.465) */
+                gal_rod_mass_mult(rod, th, w);
+                for (int k = 0; k < nm; k++) {
+                    double pk = 0;
+                    for (int d = 0; d < n; d++) pk += m->V[(size_t)k * n + d] * w[d];
+                    for (int d = 0; d < n; d++) th[d] -= pk * m->V[(size_t)k * n + d];
+                }
+            }
+        }
+    }
+done:
+    gal_csc_free(Kp); gal_csc_free(Km);
+    free(w); free(qp);
+    return st;
+}
+
+void gal_rom_qm_mono(const gal_rom *m, const double *x, const double *xd, const double *xdd, double *mono,
+                     double *dmono, double *ddmono)
+{
+    int nm = m->nmodes;
+    for (int j = 0, p = 0; j < nm; j++)
+        for (int i = 0; i <= j; i++, p++) {
+            double c = i == j ? 0.5 : 1.0;
+            mono[p] = c * x[i] * x[j];
+            if (xd) dmono[p] = c * (xd[i] * x[j] + x[i] * xd[j]);
+            if (xd && xdd) ddmono[p] = c * (xdd[i] * x[j] + 2 * xd[i] * xd[j] + x[i] * xdd[j]);
+        }
+}
+
+void gal_rom_qm_displacement(gal_rom *m, const double *x, const double *xd, double *u, double *ud)
+{
+    const gal_rom_qm *qm = m->qm;
+    int n = m->ndof, nm = m->nmodes, np = qm->np;
+    double *mono = qm->mono, *dmono = mono + np;
+    gal_rom_qm_mono(m, x, xd, NULL, mono, dmono, NULL);
+    for (int d = 0; d < n; d++) {
+        double s = 0, sv = 0;
+        for (int k = 0; k < nm; k++) {
+            s += m->V[(size_t)k * n + d] * x[k];
+            if (xd) sv += m->V[(size_t)k * n + d] * xd[k];
+        }
+        for (int p = 0; p < np; p++) {
+            double t = qm->Th[(size_t)p * n + d];
+            s += t * mono[p];
+            if (xd) sv += t * dmono[p];
+        }
+        u[d] = s;
+        if (xd) ud[d] = sv;
+    }
+}
+
+const double *gal_rom_qm_basis(gal_rom *m, const double *x)
+{
+    gal_rom_qm *qm = m->qm;
+    int n = m->ndof, nm = m->nmodes;
+    memcpy(qm->P, m->V, (size_t)n * nm * sizeof(double));
+    for (int k = 0; k < nm; k++) {
+        double *pk = qm->P + (size_t)k * n;
+        for (int j = 0; j < nm; j++) {
+            if (x[j] == 0) continue;
+            const double *th = qm->Th + (size_t)qm->pair[k * nm + j] * n;
+            for (int d = 0; d < n; d++) pk[d] += th[d] * x[j];
+        }
+    }
+    return qm->P;
+}
+
+void gal_rom_qm_curvature(const gal_rom *m, const double *g, double *Kr)
+{
+    const gal_rom_qm *qm = m->qm;
+    int n = m->ndof, nm = m->nmodes;
+    for (int j = 0; j < nm; j++)
+        for (int i = 0; i <= j; i++) {
+            const double *th = qm->Th + (size_t)qm->pair[i * nm + j] * n;
+            double s = 0;
+            for (int d = 0; d < n; d++) s += th[d] * g[m->rod->free_q[d]];
+            Kr[i * nm + j] += s;
+            if (i != j) Kr[j * nm + i] += s;
+        }
+}
+
+/* Solve the SPD nm x nm system A y = b in place (Cholesky, A overwritten); 0 on success. */
+static int spd_solve(double *A, int p, double *b)
+{
+    for (int j = 0; j < p; j++) {
+        double d = A[j * p + j];
+        for (int k = 0; k < j; k++) d -= A[j * p + k] * A[j * p + k];
+        if (!(d > 0)) return -1;
+        A[j * p + j] = sqrt(d);
+        for (int i = j + 1; i < p; i++) {
+            double s = A[i * p + j];
+            for (int k = 0; k < j; k++) s -= A[i * p + k] * A[j * p + k];
+            A[i * p + j] = s / A[j * p + j];
+        }
+    }
+    for (int i = 0; i < p; i++) {
+        for (int k = 0; k < i; k++) b[i] -= A[i * p + k] * b[k];
+        b[i] /= A[i * p + i];
+    }
+    for (int i = p - 1; i >= 0; i--) {
+        for (int k = i + 1; k < p; k++) b[i] -= A[k * p + i] * b[k];
+        b[i] /= A[i * p + i];
+    }
+    return 0;
+}
+
+/* A = P^T M P and b = P^T M y (y over the free dofs; t: scratch of ndof). */
+static void normal_equations(gal_rom *m, const double *P, const double *y, double *A, double *b, double *t)
+{
+    int n = m->ndof, nm = m->nmodes;
+    for (int i = 0; i < nm; i++) {
+        gal_rod_mass_mult(m->rod, P + (size_t)i * n, t);
+        double s = 0;
+        for (int d = 0; d < n; d++) s += t[d] * y[d];
+        b[i] = s;
+        for (int j = 0; j <= i; j++) {
+            const double *pj = P + (size_t)j * n;
+            double a = 0;
+            for (int d = 0; d < n; d++) a += t[d] * pj[d];
+            A[i * nm + j] = A[j * nm + i] = a;
+        }
+    }
+}
+
+int gal_rom_qm_project_state(gal_rom *m, const double *q, const double *v, double *x, double *xd)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, nm = m->nmodes, st = GAL_OK;
+    double *u = m->wn, *res = m->wn2, *A = m->qm->M, b[64], *t = malloc((size_t)n * sizeof(double));
+    if (!t) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    if (nm > 64) { free(t); return gal_error(GAL_EINPUT, "reduced model: the manifold takes at most 64 modes"); }
+    for (int d = 0; d < n; d++) u[d] = q[rod->free_q[d]] - m->q_eq[rod->free_q[d]];
+    memset(x, 0, (size_t)nm * sizeof(double));
+    for (int it = 0; it < 30 && !st; it++) { /* Gauss-Newton on |u - u(x)|_M */
+        gal_rom_qm_displacement(m, x, NULL, res, NULL);
+        double rn = 0, un = 0;
+        for (int d = 0; d < n; d++) res[d] = u[d] - res[d], rn += res[d] * res[d] * rod->mdiag[d], un += u[d] * u[d] * rod->mdiag[d];
+        normal_equations(m, gal_rom_qm_basis(m, x), res, A, b, t);
+        if (spd_solve(A, nm, b)) st = gal_error(GAL_EFAIL, "reduced model: the manifold's basis is singular");
+        double dn = 0, xn = 0;
+        for (int k = 0; k < nm && !st; k++) x[k] += b[k], dn += b[k] * b[k], xn += x[k] * x[k];
+        if (dn <= 1e-24 * xn || rn <= 1e-28 * un || un == 0) break;
+    }
+    if (!st && xd) {
+        for (int d = 0; d < n; d++) u[d] = v ? v[rod->free_q[d]] : 0;
+        normal_equations(m, gal_rom_qm_basis(m, x), u, A, xd, t);
+        if (spd_solve(A, nm, xd)) st = gal_error(GAL_EFAIL, "reduced model: the manifold's basis is singular");
+    }
+    free(t);
+    return st;
+}
