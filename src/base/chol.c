@@ -1,4 +1,5 @@
-/* chol.c: CHOLMOD wrapper: analyse once, factorize and solve many times without allocating. */
+/* chol.c: CHOLMOD wrapper: analyse once, factorize and solve many times without allocating; the
+ * tangent (values and analysis) one stage hands to the next. */
 #include "base/chol.h"
 
 #include <stdlib.h>
@@ -118,13 +119,9 @@ gal_chol *gal_chol_alloc(const gal_csc *K)
     return f;
 }
 
-int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d)
+/* The numeric factorization of f->A as it was filled. */
+static int factor_filled(gal_chol *f)
 {
-    double *Ax = f->A->x;
-    const int *map = f->map;
-    for (int k = 0; k < K->nnz; k++) Ax[map[k]] = K->val[k];
-    if (shift != 0)
-        for (int j = 0; j < K->n; j++) Ax[map[K->diag[j]]] += shift * (d ? d[j] : 1.0);
     f->factorizations++;
     int ok = cholmod_factorize(f->A, f->L, &f->c);
     /* out of memory is reported as memory, never as a matrix that is not positive definite (a
@@ -144,6 +141,24 @@ int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d
     return GAL_OK;
 }
 
+int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d)
+{
+    double *Ax = f->A->x;
+    const int *map = f->map;
+    for (int k = 0; k < K->nnz; k++) Ax[map[k]] = K->val[k];
+    if (shift != 0)
+        for (int j = 0; j < K->n; j++) Ax[map[K->diag[j]]] += shift * (d ? d[j] : 1.0);
+    return factor_filled(f);
+}
+
+int gal_chol_factor_pencil(gal_chol *f, const gal_csc *K, double sigma, const gal_csc *M)
+{
+    double *Ax = f->A->x;
+    const int *map = f->map;
+    for (int k = 0; k < K->nnz; k++) Ax[map[k]] = K->val[k] - sigma * M->val[k];
+    return factor_filled(f);
+}
+
 int gal_chol_solve(gal_chol *f, const double *b, double *x)
 {
     double *B = f->B->x;
@@ -156,4 +171,29 @@ int gal_chol_solve(gal_chol *f, const double *b, double *x)
     for (int k = 0; k < f->n; k++) x[f->perm[k]] = X[k];
     f->solves++;
     return GAL_OK;
+}
+
+gal_tangent *gal_tangent_alloc(gal_csc **K, gal_chol **chol, const double *q, int nq, double L0)
+{
+    gal_tangent *t = malloc(sizeof *t);
+    double *qc = malloc((size_t)nq * sizeof(double));
+    if (!t || !qc) {
+        free(t); free(qc);
+        return NULL;
+    }
+    memcpy(qc, q, (size_t)nq * sizeof(double));
+    t->K = *K, t->chol = *chol, t->q = qc, t->nq = nq, t->L0 = L0;
+    *K = NULL, *chol = NULL;
+    return t;
+}
+
+gal_tangent *gal_tangent_free(gal_tangent *t)
+{
+    if (t) {
+        gal_csc_free(t->K);
+        gal_chol_free(t->chol);
+        free(t->q);
+        free(t);
+    }
+    return NULL;
 }

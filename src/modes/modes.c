@@ -126,14 +126,14 @@ static void split_clusters(const gal_rod *rod, gal_modes *out, const double *mdi
 /* The arrays of one ARPACK run (kept by the context for the next when large enough). */
 typedef struct modes_ws {
     int n, nev, ncv, lworkl, cap_nev, cap_ncv;
-    double *tmp, *resid, *v, *workd, *workl, *d, *z;
+    double *tmp, *resid, *v, *workd, *workl, *d; /* v: the Lanczos basis, then the Ritz vectors */
     int *select;
 } modes_ws;
 
 static void ws_free(modes_ws *w)
 {
     if (!w) return;
-    free(w->tmp); free(w->resid); free(w->v); free(w->workd); free(w->workl); free(w->d); free(w->z);
+    free(w->tmp); free(w->resid); free(w->v); free(w->workd); free(w->workl); free(w->d);
     free(w->select);
     free(w);
 }
@@ -169,8 +169,8 @@ static modes_ws *ws_get(gal_modes_ctx *c, int n, int nev)
     w->tmp = malloc((size_t)n * sizeof(double)), w->resid = malloc((size_t)n * sizeof(double));
     w->v = malloc((size_t)n * ncv * sizeof(double)), w->workd = malloc((size_t)3 * n * sizeof(double));
     w->workl = malloc((size_t)w->lworkl * sizeof(double)), w->d = malloc((size_t)nev * sizeof(double));
-    w->z = malloc((size_t)n * nev * sizeof(double)), w->select = calloc((size_t)ncv, sizeof(int));
-    if (!w->tmp || !w->resid || !w->v || !w->workd || !w->workl || !w->d || !w->z || !w->select) {
+    w->select = calloc((size_t)ncv, sizeof(int));
+    if (!w->tmp || !w->resid || !w->v || !w->workd || !w->workl || !w->d || !w->select) {
         ws_free(w);
         c->ws = NULL;
         gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
@@ -184,27 +184,39 @@ void gal_modes_ctx_clear(gal_modes_ctx *c)
     gal_chol_free(c->chol);
     ws_free(c->ws);
     free(c->K0.val);
-    free(c->K.val);
     free(c->full);
     free(c->start);
     memset(c, 0, sizeof *c);
 }
 
-int gal_modes_ctx_init(gal_modes_ctx *c, const gal_rod *rod, const double *q)
+/* 1 when t holds rod's tangent at q (same pattern, length and configuration). */
+static int tangent_fits(const gal_tangent *t, const gal_rod *rod, const double *q)
+{
+    return t && t->K && t->K->val && t->chol && t->nq == rod->nq && t->K->n == rod->K->n &&
+           t->K->nnz == rod->K->nnz && t->L0 == rod->p.unstretched_length &&
+           !memcmp(t->q, q, (size_t)rod->nq * sizeof(double));
+}
+
+int gal_modes_ctx_init(gal_modes_ctx *c, const gal_rod *rod, const double *q, gal_tangent *t)
 {
     memset(c, 0, sizeof *c);
     c->rod = rod, c->q = q;
-    int n = rod->ndof;
-    c->K0 = *rod->K, c->K = *rod->K; /* views of the pattern: only the values are the context's */
-    c->K0.val = malloc((size_t)rod->K->nnz * sizeof(double)), c->K.val = malloc((size_t)rod->K->nnz * sizeof(double));
+    int n = rod->ndof, taken = tangent_fits(t, rod, q);
+    c->K0 = *rod->K; /* a view of the pattern: only the values are the context's */
+    if (taken) { /* the values and the analysis taken over */
+        c->K0.val = t->K->val, c->chol = t->chol;
+        t->K->val = NULL, t->chol = NULL;
+    } else {
+        c->K0.val = malloc((size_t)rod->K->nnz * sizeof(double));
+    }
     c->full = malloc((size_t)rod->nq * sizeof(double)), c->start = malloc((size_t)n * sizeof(double));
-    c->chol = c->K.val ? gal_chol_alloc(&c->K) : NULL;
-    if (!c->K0.val || !c->K.val || !c->full || !c->start || !c->chol) {
+    if (!taken) c->chol = c->K0.val ? gal_chol_alloc(&c->K0) : NULL;
+    if (!c->K0.val || !c->full || !c->start || !c->chol) {
         gal_modes_ctx_clear(c);
         return gal_error(GAL_ENOMEM, "modes: out of memory for %d dofs", n);
     }
     for (int k = 0; k < n; k++) c->start[k] = 1.0 + 0.37 * sin(1.3 * k); /* deterministic */
-    int st = gal_rod_eval(rod, q, NULL, NULL, &c->K0);
+    int st = taken ? GAL_OK : gal_rod_eval(rod, q, NULL, NULL, &c->K0);
     if (st) gal_modes_ctx_clear(c);
     return st;
 }
@@ -215,7 +227,6 @@ int gal_modes_ctx_init(gal_modes_ctx *c, const gal_rod *rod, const double *q)
 static int shift_factor(gal_modes_ctx *c, double sigma, int below, gal_modes *out)
 {
     const gal_rod *rod = c->rod;
-    gal_csc *K = &c->K;
     int n = rod->ndof;
     if (below) {
         double kmin = INFINITY;
@@ -224,8 +235,7 @@ static int shift_factor(gal_modes_ctx *c, double sigma, int below, gal_modes *ou
         if (!(sigma < 0)) sigma = -1e-3;
     }
     out->sigma = sigma;
-    for (int k = 0; k < K->nnz; k++) K->val[k] = c->K0.val[k] - sigma * rod->M->val[k];
-    int st = gal_chol_factor(c->chol, K, 0, NULL);
+    int st = gal_chol_factor_pencil(c->chol, &c->K0, sigma, rod->M);
     if (st == GAL_ENOMEM) return st;
     if (st != GAL_OK && below)
         return gal_error(GAL_EFAIL, "modes: K - sigma M is not positive definite at sigma = %g: the "
@@ -240,7 +250,8 @@ static int shift_factor(gal_modes_ctx *c, double sigma, int below, gal_modes *ou
     return GAL_OK;
 }
 
-/* ARPACK reverse communication, OP = (K - sigma M)^-1 M, B = M, then the eigenpairs (w->d, w->z). */
+/* ARPACK reverse communication, OP = (K - sigma M)^-1 M, B = M, then the eigenpairs (w->d, and the
+ * Ritz vectors over the first nev columns of the basis w->v: dseupd computes them there anyway). */
 static int arpack(gal_modes_ctx *c, modes_ws *w, gal_modes *out)
 {
     const gal_rod *rod = c->rod;
@@ -273,7 +284,7 @@ static int arpack(gal_modes_ctx *c, modes_ws *w, gal_modes *out)
         return gal_error(GAL_EFAIL, "modes: ARPACK dsaupd failed (info %d%s)", info,
                          info == 1 ? ": maximum number of restarts reached" : "");
     out->arpack_restarts = iparam[2];
-    dseupd_c(1, "A", w->select, w->d, w->z, n, sigma, "G", n, "LM", nev, tol, w->resid, ncv, w->v, n, iparam,
+    dseupd_c(1, "A", w->select, w->d, w->v, n, sigma, "G", n, "LM", nev, tol, w->resid, ncv, w->v, n, iparam,
              ipntr, w->workd, w->workl, w->lworkl, &info);
     if (info != 0) return gal_error(GAL_EFAIL, "modes: ARPACK dseupd failed (info %d)", info);
     int nconv = iparam[4];
@@ -328,7 +339,7 @@ static int extract(gal_modes_ctx *c, modes_ws *w, int below, gal_modes *out)
         for (int b = a; b > 0 && d[ord[b]] < d[ord[b - 1]]; b--) { int t = ord[b]; ord[b] = ord[b - 1]; ord[b - 1] = t; }
     int nlow = 0; /* modes of the window below the shift */
     for (int k = 0; k < nev && !st; k++) {
-        st = store_mode(c, w->z + (size_t)ord[k] * n, d[ord[k]], w->tmp, out, k);
+        st = store_mode(c, w->v + (size_t)ord[k] * n, d[ord[k]], w->tmp, out, k);
         nlow += d[ord[k]] < out->sigma;
     }
     free(ord);
@@ -388,7 +399,7 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
         return gal_error(GAL_EINPUT, "modes: %d modes asked of a system with %d degrees of freedom "
                          "(allowed: 1 to %d)", nev, n, n - 1);
     gal_modes_ctx c;
-    int st = gal_modes_ctx_init(&c, rod, q);
+    int st = gal_modes_ctx_init(&c, rod, q, NULL);
     if (st) return st;
     st = gal_modes_run(&c, nev, 0, 1, out);
     gal_modes_ctx_clear(&c);

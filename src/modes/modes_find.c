@@ -265,15 +265,16 @@ static int find(gal_modes_ctx *c, const int want[GAL_FAMILY_COUNT], int max_mode
     return st;
 }
 
-int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMILY_COUNT],
-                   int max_modes, gal_modes *out)
+/* gal_modes_find, with a tangent handed over (or NULL). */
+static int find_with(const gal_rod *rod, const double *q, gal_tangent *t, const int want[GAL_FAMILY_COUNT],
+                     int max_modes, gal_modes *out)
 {
     double t0 = gal_wall_time();
     int n = rod->ndof;
     if (max_modes > n - 1) max_modes = n - 1;
     memset(out, 0, sizeof *out);
     gal_modes_ctx c;
-    int st = gal_modes_ctx_init(&c, rod, q);
+    int st = gal_modes_ctx_init(&c, rod, q, t);
     if (st) return st;
     gal_modes acc = {0};
     st = find(&c, want, max_modes, out, &acc);
@@ -294,4 +295,17 @@ int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMIL
     out->op_applications = acc.op_applications, out->factorizations = acc.factorizations, out->solves = acc.solves;
     out->wall_time_s = gal_wall_time() - t0;
     return GAL_OK;
+}
+
+int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMILY_COUNT],
+                   int max_modes, gal_modes *out)
+{
+    return find_with(rod, q, NULL, want, max_modes, out);
+}
+
+int gal_modes_find_eq(gal_equilibrium *eq, const int want[GAL_FAMILY_COUNT], int max_modes, gal_modes *out)
+{
+    int st = find_with(eq->rod, eq->q, eq->tangent, want, max_modes, out);
+    eq->tangent = gal_tangent_free(eq->tangent); /* taken over, or of no use now: its memory back */
+    return st;
 }

@@ -11,14 +11,15 @@ typedef struct gal_modes_ctx {
     const gal_rod *rod;
     const double *q;
     gal_csc K0;      /* the tangent stiffness at q (upper triangle; rod->K's pattern, own values) */
-    gal_csc K;       /* K0 - sigma M of the current run (the same) */
     double *start;   /* ndof: ARPACK's deterministic start vector */
     gal_chol *chol;  /* analysed once; factorized once per run */
     double *full;    /* nq scratch */
     struct modes_ws *ws; /* ARPACK's arrays, kept for the next run when large enough */
 } gal_modes_ctx;
 
-int gal_modes_ctx_init(gal_modes_ctx *c, const gal_rod *rod, const double *q);
+/* The context about q; t (or NULL): a tangent handed over (the statics' at the equilibrium), whose
+ * values and analysis the context takes when they are rod's at q (else it evaluates and analyses). */
+int gal_modes_ctx_init(gal_modes_ctx *c, const gal_rod *rod, const double *q, gal_tangent *t);
 void gal_modes_ctx_clear(gal_modes_ctx *c);
 
 /* One ARPACK shift-invert run: nev modes of the context. below = 1: the shift is chosen below the

@@ -58,7 +58,7 @@ static int stage_modes(const gal_model *m, gal_data *d)
     if (want[GAL_FAMILY_VERTICAL] + want[GAL_FAMILY_HORIZONTAL] + want[GAL_FAMILY_TORSIONAL] == 0)
         return gal_error(GAL_EINPUT, "%s: [model] selects no modes; allowed: at least one of modes_vertical, "
                          "modes_horizontal, modes_torsional (torsional with torsion on)", m->sc.path);
-    int st = gal_modes_find(d->eq.rod, d->eq.q, want, m->max_modes, &d->md);
+    int st = gal_modes_find_eq(&d->eq, want, m->max_modes, &d->md);
     if (st) return gal_error(st, "%s: %s", m->sc.path, gal_error_message());
     /* the damping is the structure's: the stated ratio at every mode of the band, whichever
      * modes the scene selects */

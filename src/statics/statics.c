@@ -22,6 +22,7 @@ void gal_statics_default_opts(gal_statics_opts *o)
 
 void gal_equilibrium_clear(gal_equilibrium *eq)
 {
+    gal_tangent_free(eq->tangent);
     gal_rod_free(eq->rod);
     free(eq->q);
     memset(eq, 0, sizeof *eq);
@@ -369,6 +370,9 @@ int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double val
         figures(&w, eq);
     }
     eq->factorizations = w.chol->factorizations;
+    /* the stability check's tangent at eq->q and its analysis, for the modes (none when out of
+     * memory: they then make their own) */
+    if (!st) eq->tangent = gal_tangent_alloc(&w.K, &w.chol, eq->q, eq->rod->nq, eq->rod->p.unstretched_length);
     ws_free(&w);
 fail:
     free(qsave);

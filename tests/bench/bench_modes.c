@@ -37,7 +37,7 @@ static int run_case(void *arg, double *out)
         double t0 = bench_cpu(), t1 = t0;
         int st = gal_statics_solve(&p, GAL_BY_TENSION, 28000, NULL, &eq);
         t1 = bench_cpu();
-        if (st || gal_modes_find(eq.rod, eq.q, want, 400, &md)) {
+        if (st || gal_modes_find_eq(&eq, want, 400, &md)) {
             fprintf(stderr, "bench_modes: %s\n", gal_error_message());
             return 1;
         }

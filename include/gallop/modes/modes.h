@@ -7,6 +7,7 @@
 #define GALLOP_MODES_H
 
 #include "gallop/rod/rod.h"
+#include "gallop/statics/statics.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -63,6 +64,12 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
  * nearest its own estimate, with a small residual) or else found from the bottom as the flexural. */
 int gal_modes_find(const gal_rod *rod, const double *q, const int want[GAL_FAMILY_COUNT],
                    int max_modes, gal_modes *out);
+
+/* gal_modes_find about the equilibrium the statics found (eq->rod at eq->q): the same modes, to the
+ * last bit, without evaluating the tangent or analysing its pattern again: those the statics'
+ * stability check left in eq->tangent are taken over (when eq->q is still the configuration they
+ * were made at) and eq->tangent is released either way. */
+int gal_modes_find_eq(gal_equilibrium *eq, const int want[GAL_FAMILY_COUNT], int max_modes, gal_modes *out);
 
 void gal_modes_clear(gal_modes *m);
 

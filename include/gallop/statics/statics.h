@@ -36,6 +36,9 @@ typedef struct gal_equilibrium {
                             * axis) and this is the twisted one the ice weight turns the span to */
     long factorizations;
     double wall_time_s;
+    struct gal_tangent *tangent; /* owned, or NULL: the tangent stiffness at q and the symbolic
+                                  * analysis of its pattern that the stability check left, which
+                                  * gal_modes_find_eq takes over (src/base/chol.h) */
 } gal_equilibrium;
 
 void gal_statics_default_opts(gal_statics_opts *o);
