@@ -29,7 +29,7 @@ void gal_modes_clear(gal_modes *m)
  * the normal b of the span's plane (chord x mid-span offset; y when the span is straight) and the
  * in-plane normal n = t x b. */
 static void classify(const gal_rod *rod, const double *q, const double *phi_free, double *full,
-                     gal_mode *md)
+                     double *comp, gal_mode *md)
 {
     int nn = rod->nn, nel = rod->p.elements;
     memset(full, 0, (size_t)rod->nq * sizeof(double));
@@ -45,8 +45,7 @@ static void classify(const gal_rod *rod, const double *q, const double *phi_free
     else for (int k = 0; k < 3; k++) b[k] /= nb;
 
     double ke[GAL_FAMILY_COUNT] = {0};
-    /* per node (or edge) family components, for the symmetry test */
-    double *comp = malloc((size_t)(4 * (nn > nel ? nn : nel)) * sizeof(double));
+    /* comp: per node (or edge) family components, for the symmetry test */
     for (int i = 0; i < nn; i++) {
         int a = i > 0 ? i - 1 : 0, c = i < nel ? i : nel - 1;
         double t[3];
@@ -59,13 +58,13 @@ static void classify(const gal_rod *rod, const double *q, const double *phi_free
         ke[GAL_FAMILY_VERTICAL] += m * uv * uv;
         ke[GAL_FAMILY_HORIZONTAL] += m * uh * uh;
         ke[GAL_FAMILY_AXIAL] += m * ua * ua;
-        if (comp) comp[4 * i + 0] = uv, comp[4 * i + 1] = uh, comp[4 * i + 3] = ua;
+        comp[4 * i + 0] = uv, comp[4 * i + 1] = uh, comp[4 * i + 3] = ua;
     }
     if (rod->p.torsion)
         for (int j = 0; j < nel; j++) {
             double th = full[3 * nn + j];
             ke[GAL_FAMILY_TORSIONAL] += rod->edge_inertia[j] * th * th;
-            if (comp) comp[4 * j + 2] = th;
+            comp[4 * j + 2] = th;
         }
     double tot = ke[0] + ke[1] + ke[2] + ke[3];
     int fam = 0;
@@ -77,19 +76,15 @@ static void classify(const gal_rod *rod, const double *q, const double *phi_free
     /* symmetry: correlation of the dominant component with its mirror image about mid-span
      * (node i <-> nn-1-i, edge j <-> nel-1-j); the axial component changes sign under the
      * mirror since the tangent does */
-    md->symmetry = GAL_SYM_NONE;
-    if (comp) {
-        int cnt = fam == GAL_FAMILY_TORSIONAL ? nel : nn;
-        double sgn = fam == GAL_FAMILY_AXIAL ? -1.0 : 1.0, num = 0, den = 0;
-        for (int i = 0; i < cnt; i++) {
-            double a = comp[4 * i + fam], m = comp[4 * (cnt - 1 - i) + fam];
-            num += a * sgn * m;
-            den += a * a;
-        }
-        double r = den > 0 ? num / den : 0;
-        md->symmetry = r > 0.9 ? GAL_SYM_SYMMETRIC : r < -0.9 ? GAL_SYM_ANTISYMMETRIC : GAL_SYM_NONE;
-        free(comp);
+    int cnt = fam == GAL_FAMILY_TORSIONAL ? nel : nn;
+    double sgn = fam == GAL_FAMILY_AXIAL ? -1.0 : 1.0, num = 0, den = 0;
+    for (int i = 0; i < cnt; i++) {
+        double a = comp[4 * i + fam], m = comp[4 * (cnt - 1 - i) + fam];
+        num += a * sgn * m;
+        den += a * a;
     }
+    double r = den > 0 ? num / den : 0;
+    md->symmetry = r > 0.9 ? GAL_SYM_SYMMETRIC : r < -0.9 ? GAL_SYM_ANTISYMMETRIC : GAL_SYM_NONE;
 }
 
 /* Within a cluster of (numerically) equal frequencies any orthonormal combination is a mode:
@@ -125,8 +120,10 @@ static void split_clusters(const gal_rod *rod, gal_modes *out, const double *mdi
 
 /* The arrays of one ARPACK run (kept by the context for the next when large enough). */
 typedef struct modes_ws {
-    int n, nev, ncv, lworkl, cap_nev, cap_ncv;
-    double *tmp, *resid, *v, *workd, *workl, *d; /* v: the Lanczos basis, then the Ritz vectors */
+    int n, nev, ncv, lworkl, cap_nev, cap_ncv, v_cols;
+    double *tmp, *resid, *workd, *workl, *d;
+    double *v; /* v_cols columns: the Lanczos basis, then the Ritz vectors, which become the modes'
+                * shapes in place (the run hands v over: a fresh one for the next) */
     int *select;
 } modes_ws;
 
@@ -149,13 +146,24 @@ int gal_modes_ncv(int nev, int n)
     return ncv > n ? n : ncv;
 }
 
-/* The context's workspace for nev modes (reallocated only when it is too small). */
-static modes_ws *ws_get(gal_modes_ctx *c, int n, int nev)
+/* The context's workspace for nev modes (reallocated only when it is too small). One mode at an
+ * inner shift (a torsional window, where the shift is that mode's estimate) takes the smallest
+ * basis ARPACK allows, 2: 3 operator applications where 3 took 4, the same frequency to the last bit
+ * (issue 16, measured on Drake spans of 10 to 10000 elements). */
+static modes_ws *ws_get(gal_modes_ctx *c, int n, int nev, int below)
 {
-    int ncv = gal_modes_ncv(nev, n);
+    int ncv = !below && nev == 1 && n >= 2 ? 2 : gal_modes_ncv(nev, n);
     modes_ws *w = c->ws;
     if (w && w->cap_nev >= nev && w->cap_ncv >= ncv) {
         w->nev = nev, w->ncv = ncv, w->lworkl = ncv * (ncv + 8);
+        if (!w->v || w->v_cols < ncv) {
+            free(w->v);
+            w->v = malloc((size_t)n * ncv * sizeof(double)), w->v_cols = ncv;
+            if (!w->v) {
+                gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
+                return NULL;
+            }
+        }
         return w;
     }
     ws_free(w);
@@ -164,7 +172,7 @@ static modes_ws *ws_get(gal_modes_ctx *c, int n, int nev)
         gal_error(GAL_ENOMEM, "modes: out of memory for %d modes of %d dofs", nev, n);
         return NULL;
     }
-    w->n = n, w->nev = w->cap_nev = nev, w->ncv = w->cap_ncv = ncv;
+    w->n = n, w->nev = w->cap_nev = nev, w->ncv = w->cap_ncv = w->v_cols = ncv;
     w->lworkl = ncv * (ncv + 8);
     w->tmp = malloc((size_t)n * sizeof(double)), w->resid = malloc((size_t)n * sizeof(double));
     w->v = malloc((size_t)n * ncv * sizeof(double)), w->workd = malloc((size_t)3 * n * sizeof(double));
@@ -185,6 +193,9 @@ void gal_modes_ctx_clear(gal_modes_ctx *c)
     ws_free(c->ws);
     free(c->K0.val);
     free(c->full);
+    free(c->comp);
+    free(c->y);
+    free(c->z);
     free(c->start);
     memset(c, 0, sizeof *c);
 }
@@ -210,8 +221,10 @@ int gal_modes_ctx_init(gal_modes_ctx *c, const gal_rod *rod, const double *q, ga
         c->K0.val = malloc((size_t)rod->K->nnz * sizeof(double));
     }
     c->full = malloc((size_t)rod->nq * sizeof(double)), c->start = malloc((size_t)n * sizeof(double));
+    c->comp = malloc((size_t)4 * (rod->nn > rod->p.elements ? rod->nn : rod->p.elements) * sizeof(double));
+    c->y = malloc((size_t)n * sizeof(double)), c->z = malloc((size_t)n * sizeof(double));
     if (!taken) c->chol = c->K0.val ? gal_chol_alloc(&c->K0) : NULL;
-    if (!c->K0.val || !c->full || !c->start || !c->chol) {
+    if (!c->K0.val || !c->full || !c->start || !c->comp || !c->y || !c->z || !c->chol) {
         gal_modes_ctx_clear(c);
         return gal_error(GAL_ENOMEM, "modes: out of memory for %d dofs", n);
     }
@@ -292,12 +305,12 @@ static int arpack(gal_modes_ctx *c, modes_ws *w, gal_modes *out)
     return GAL_OK;
 }
 
-/* Mode k's shape from ARPACK's column phi: mass-normalized (ARPACK's are M-orthonormal already;
+/* Mode k's shape from ARPACK's Ritz vector in its column: mass-normalized (ARPACK's are M-orthonormal already;
  * renormalized against round-off), sign fixed (largest entry positive); its frequency. */
-static int store_mode(gal_modes_ctx *c, const double *phi, double lam, double *tmp, gal_modes *out, int k)
+static int store_mode(gal_modes_ctx *c, double lam, double *tmp, gal_modes *out, int k)
 {
     int n = out->ndof;
-    double *dst = out->shape + (size_t)k * n, mm = 0, big = 0;
+    double *dst = out->shape + (size_t)k * n, *phi = dst, mm = 0, big = 0; /* in place */
     gal_rod_mass_mult(c->rod, phi, tmp);
     for (int j = 0; j < n; j++) {
         mm += tmp[j] * phi[j];
@@ -324,22 +337,38 @@ static int extract(gal_modes_ctx *c, modes_ws *w, int below, gal_modes *out)
     int n = w->n, nev = w->nev, st = GAL_OK;
     out->n = nev;
     out->ndof = n;
-    out->mode = calloc((size_t)nev, sizeof(gal_mode));
-    out->shape = malloc((size_t)n * nev * sizeof(double));
+    int cap = nev + (below ? c->spare : 0); /* room for the modes a search appends (no copy) */
+    out->mode = calloc((size_t)cap, sizeof(gal_mode));
+    if (below) c->capacity = cap;
     int *ord = malloc((size_t)nev * sizeof(int));
     double *lam = malloc((size_t)nev * sizeof(double));
-    if (!out->mode || !out->shape || !ord || !lam) {
+    if (!out->mode || !ord || !lam) {
         free(ord); free(lam);
         return gal_error(GAL_ENOMEM, "modes: out of memory");
     }
     /* sort by eigenvalue (dseupd returns them ascending, but do not rely on it) */
     const double *d = w->d;
+    int sorted = 1;
     for (int k = 0; k < nev; k++) ord[k] = k;
     for (int a = 1; a < nev; a++)
-        for (int b = a; b > 0 && d[ord[b]] < d[ord[b - 1]]; b--) { int t = ord[b]; ord[b] = ord[b - 1]; ord[b - 1] = t; }
+        for (int b = a; b > 0 && d[ord[b]] < d[ord[b - 1]]; b--) { int t = ord[b]; ord[b] = ord[b - 1]; ord[b - 1] = t; sorted = 0; }
+    /* the Ritz vectors become the shapes where dseupd left them (the first nev columns of v) */
+    double *shape = sorted ? w->v : malloc((size_t)n * nev * sizeof(double));
+    if (shape && !sorted) {
+        for (int k = 0; k < nev; k++) memcpy(shape + (size_t)k * n, w->v + (size_t)ord[k] * n, (size_t)n * sizeof(double));
+        memcpy(w->v, shape, (size_t)n * nev * sizeof(double));
+        free(shape);
+        shape = w->v;
+    }
+    if (shape) shape = realloc(shape, (size_t)n * cap * sizeof(double));
+    if (!shape) {
+        free(ord); free(lam);
+        return gal_error(GAL_ENOMEM, "modes: out of memory");
+    }
+    out->shape = shape, w->v = NULL;
     int nlow = 0; /* modes of the window below the shift */
     for (int k = 0; k < nev && !st; k++) {
-        st = store_mode(c, w->v + (size_t)ord[k] * n, d[ord[k]], w->tmp, out, k);
+        st = store_mode(c, d[ord[k]], w->tmp, out, k);
         nlow += d[ord[k]] < out->sigma;
     }
     free(ord);
@@ -361,7 +390,7 @@ static int extract(gal_modes_ctx *c, modes_ws *w, int below, gal_modes *out)
 
 void gal_modes_classify(gal_modes_ctx *c, gal_modes *out, int k)
 {
-    classify(c->rod, c->q, out->shape + (size_t)k * out->ndof, c->full, out->mode + k);
+    classify(c->rod, c->q, out->shape + (size_t)k * out->ndof, c->full, c->comp, out->mode + k);
     out->found[out->mode[k].family]++;
 }
 
@@ -373,7 +402,7 @@ int gal_modes_run(gal_modes_ctx *c, int nev, double sigma, int below, gal_modes 
     if (nev < 1 || nev > n - 1)
         return gal_error(GAL_EINPUT, "modes: %d modes asked of a system with %d degrees of freedom "
                          "(allowed: 1 to %d)", nev, n, n - 1);
-    modes_ws *w = ws_get(c, n, nev);
+    modes_ws *w = ws_get(c, n, nev, below);
     if (!w) return GAL_ENOMEM;
     long f0 = c->chol->factorizations, s0 = c->chol->solves;
     int st = shift_factor(c, sigma, below, out);

@@ -36,9 +36,11 @@ static int sturm_newton(int m, const double *a, const double *b, double x, doubl
 
 /* The lowest eigenvalues lam (omega^2) of the twist block of (K0, M), at most nt, and past the
  * first `need` only while below `stop`: the free edge twists in edge order couple only to their
- * neighbours (a tridiagonal pencil with a diagonal mass), scaled by the mass. Returns how many it
- * gave (0: no torsion). */
-static int twist_estimates(const gal_rod *rod, const gal_csc *K0, int nt, int need, double stop, double *lam)
+ * neighbours (a tridiagonal pencil with a diagonal mass), scaled by the mass. The first `exact`
+ * (the shifts) to 1e-10, the others (a spacing, a count below a bound) to 1e-6. Returns how many
+ * it gave (0: no torsion). */
+static int twist_estimates(const gal_rod *rod, const gal_csc *K0, int nt, int need, int exact, double stop,
+                           double *lam)
 {
     int nel = rod->p.elements, m = 0;
     if (!rod->p.torsion || nt < 1) return 0;
@@ -66,11 +68,12 @@ static int twist_estimates(const gal_rod *rod, const gal_csc *K0, int nt, int ne
                                     * else bisection (of the logarithm: the matrix is positive
                                     * definite) */
         double l = k > 0 ? fmax(lo, lam[k - 1]) : fmax(lo, 1e-16 * hi), h = hi, x = sqrt(l * h), step;
+        double tol = k < exact ? 1e-10 : 1e-6;
         for (int it = 0; it < 200; it++) {
             if (sturm_newton(m, a, b, x, &step) <= k) l = x; else h = x;
             double xn = x + step;
             if (!(xn > l && xn < h)) xn = sqrt(l * h);
-            int done = fabs(xn - x) < 1e-10 * x || h - l < 1e-10 * h;
+            int done = fabs(xn - x) < tol * x || h - l < tol * h;
             x = xn;
             if (done) break;
         }
@@ -151,14 +154,16 @@ static int torsional_window(gal_modes_ctx *c, const double *est, int k, double l
 }
 
 /* out (the modes from the bottom) extended by the picked torsional modes, in order. */
-static int append(gal_modes *out, gal_modes *pick, int np)
+static int append(const gal_modes_ctx *c, gal_modes *out, gal_modes *pick, int np)
 {
     int n = out->ndof, m = out->n + np;
-    gal_mode *mode = realloc(out->mode, (size_t)m * sizeof(gal_mode));
-    if (mode) out->mode = mode;
-    double *shape = realloc(out->shape, (size_t)m * n * sizeof(double));
-    if (shape) out->shape = shape;
-    if (!mode || !shape) return gal_error(GAL_ENOMEM, "modes: out of memory");
+    if (m > c->capacity) { /* the run from below left no room for them */
+        gal_mode *mode = realloc(out->mode, (size_t)m * sizeof(gal_mode));
+        if (mode) out->mode = mode;
+        double *shape = realloc(out->shape, (size_t)m * n * sizeof(double));
+        if (shape) out->shape = shape;
+        if (!mode || !shape) return gal_error(GAL_ENOMEM, "modes: out of memory");
+    }
     for (int i = 0; i < np; i++) {
         out->mode[out->n] = pick[i].mode[0];
         memcpy(out->shape + (size_t)out->n * n, pick[i].shape, (size_t)n * sizeof(double));
@@ -190,12 +195,12 @@ static int from_bottom(gal_modes_ctx *c, int nev, int max_modes, const int want[
 /* The torsional modes out lacks, each from its own shift; 1 in *done when all passed the check. */
 static int torsional_windows(gal_modes_ctx *c, const double *est, int wt, gal_modes *out, gal_modes *acc, int *done)
 {
-    int n = c->rod->ndof, tl = out->found[GAL_FAMILY_TORSIONAL], st = GAL_OK, np = 0;
+    int tl = out->found[GAL_FAMILY_TORSIONAL], st = GAL_OK, np = 0;
     gal_modes *pick = calloc((size_t)wt, sizeof(gal_modes));
-    double *y = malloc((size_t)n * sizeof(double)), *z = malloc((size_t)n * sizeof(double));
+    double *y = c->y, *z = c->z;
     double lam_top = out->mode[out->n - 1].omega * out->mode[out->n - 1].omega;
     *done = 0;
-    if (!pick || !y || !z) st = gal_error(GAL_ENOMEM, "modes: out of memory");
+    if (!pick) st = gal_error(GAL_ENOMEM, "modes: out of memory");
     for (int k = tl; !st && k < wt; k++) {
         st = torsional_window(c, est, k, lam_top, acc, &pick[np], y, z);
         if (st || pick[np].n == 0) break;
@@ -203,11 +208,11 @@ static int torsional_windows(gal_modes_ctx *c, const double *est, int wt, gal_mo
         np++;
     }
     if (!st && np == wt - tl) {
-        st = append(out, pick, np);
+        st = append(c, out, pick, np);
         *done = !st;
     }
     for (int i = 0; pick && i < wt; i++) gal_modes_clear(&pick[i]);
-    free(pick); free(y); free(z);
+    free(pick);
     return st;
 }
 
@@ -247,12 +252,14 @@ static int find(gal_modes_ctx *c, const int want[GAL_FAMILY_COUNT], int max_mode
     double *est = malloc((size_t)ne * sizeof(double));
     if (!est) return gal_error(GAL_ENOMEM, "modes: out of memory");
     double bound = (pairs + 1) * (pairs + 1) * string_lambda1(c->rod, c->q);
-    int nest = wt > 0 || bound > 0 ? twist_estimates(c->rod, &c->K0, ne, wt > 0 ? wt + 1 : 1, bound, est) : 0, low = 0;
+    int nest = wt > 0 || bound > 0 ? twist_estimates(c->rod, &c->K0, ne, wt > 0 ? wt + 1 : 1, wt, bound, est) : 0, low = 0;
     while (low < nest && est[low] < bound) low++;
     /* the twist block holds the torsional modes where the twist is not coupled to the motion
      * through the mass: not with eccentric ice (there they came out 1.3 times higher) */
     int windows = nest >= wt + 1 && !c->rod->ecc_c;
+    c->spare = windows ? wt : 0;
     st = from_bottom(c, 2 * pairs + low, max_modes, want, 3, out, acc);
+    c->spare = 0;
     if (!st && wt > 0 && out->found[GAL_FAMILY_TORSIONAL] < wt && out->n < max_modes) {
         if (windows) st = torsional_windows(c, est, wt, out, acc, &done);
         if (!st && !done) { /* from the bottom, every family */

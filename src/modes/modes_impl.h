@@ -14,7 +14,11 @@ typedef struct gal_modes_ctx {
     double *start;   /* ndof: ARPACK's deterministic start vector */
     gal_chol *chol;  /* analysed once; factorized once per run */
     double *full;    /* nq scratch */
+    double *comp;    /* 4 max(nodes, elements) scratch (the symmetry test) */
+    double *y, *z;   /* ndof scratch each (residuals) */
     struct modes_ws *ws; /* ARPACK's arrays, kept for the next run when large enough */
+    int spare;       /* columns a run from below allocates beyond its modes (for those appended) */
+    int capacity;    /* the columns the last run from below allocated */
 } gal_modes_ctx;
 
 /* The context about q; t (or NULL): a tangent handed over (the statics' at the equilibrium), whose
