@@ -5,10 +5,13 @@
  * a string of N lumped masses has w_n = (2N c / L) sin(n pi / 2N), a relative error of
  * -(n pi / N)^2 / 24, which is what the rod shows for the out-of-plane and torsional modes; the
  * in-plane modes add the shallow-cable theory's own O((sag/L)^2) error, 8 (d/L)^2 = 7e-4 here. */
+#include <string.h>
+
 #include "check.h"
 #include "gallop.h"
 #include "gallop/modes/modes.h"
 #include "gallop/statics/statics.h"
+#include "modes/modes_impl.h"
 
 #define L 100.0
 #define H 20000.0
@@ -253,8 +256,70 @@ static void test_family_shifts(void)
     check_against_bottom(&p, want, 2);
 }
 
+/* 1 when a and b hold the same modes to the last bit (frequencies, ranks, families, shapes). */
+static int same_modes(const gal_modes *a, const gal_modes *b)
+{
+    if (a->n != b->n || a->ndof != b->ndof) return 0;
+    for (int k = 0; k < a->n; k++)
+        if (a->mode[k].omega != b->mode[k].omega || a->mode[k].index != b->mode[k].index ||
+            a->mode[k].family != b->mode[k].family || a->mode[k].selected != b->mode[k].selected)
+            return 0;
+    return !memcmp(a->shape, b->shape, (size_t)a->n * a->ndof * sizeof(double));
+}
+
+/* The modes about an equilibrium taking over the statics' tangent and analysis (gal_modes_find_eq,
+ * gal_modes_solve_eq) are those computed from scratch, to the last bit: clamped and free twist,
+ * eccentric ice; the handed tangent is released; with the configuration moved after the statics
+ * it is not taken (the modes are those of the configuration moved). */
+static void test_handover(void)
+{
+    gal_rod_params p = {.length = 300, .elements = 150, .EA = 2.9e7, .EI = 28, .GJ = 160, .mass = 1.628,
+                        .polar_inertia = 1.6e-4, .gravity = G, .torsion = 1, .twist_clamped = 1};
+    int want[GAL_FAMILY_COUNT] = {3, 2, 2, 0};
+    for (int v = 0; v < 4; v++) {
+        if (v == 1) p.twist_clamped = 0;
+        if (v == 2) p.twist_clamped = 1, p.ecc_mass = 0.6, p.ecc = 0.02, p.ecc_angle = GAL_PI / 2, p.mass += 0.6;
+        gal_equilibrium eq;
+        gal_modes a, b, c, d;
+        CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 28000, NULL, &eq) == GAL_OK, "statics: %s", gal_error_message());
+        CHECK(eq.tangent != NULL, "case %d: the statics hand over their tangent", v);
+        if (v == 3) eq.q[3 * (eq.rod->nn / 2) + 2] += 1e-3; /* moved: the tangent no longer fits */
+        { /* taken (values and analysis leave the tangent) exactly when it fits */
+            gal_tangent *t = eq.tangent;
+            gal_csc *K = gal_csc_clone(t->K);
+            memcpy(K->val, t->K->val, (size_t)K->nnz * sizeof(double));
+            gal_chol *ch = gal_chol_alloc(K);
+            gal_tangent *t2 = gal_tangent_alloc(&K, &ch, t->q, t->nq, t->L0);
+            gal_modes_ctx ctx;
+            CHECK(t2 && gal_modes_ctx_init(&ctx, eq.rod, eq.q, t2) == GAL_OK, "ctx: %s", gal_error_message());
+            CHECK((t2->chol == NULL) == (v != 3), "case %d: the tangent %s", v, v != 3 ? "taken" : "left");
+            gal_modes_ctx_clear(&ctx);
+            gal_tangent_free(t2);
+        }
+        CHECK(gal_modes_find(eq.rod, eq.q, want, 400, &a) == GAL_OK, "find: %s", gal_error_message());
+        CHECK(gal_modes_solve(eq.rod, eq.q, 9, &c) == GAL_OK, "solve: %s", gal_error_message());
+        CHECK(gal_modes_find_eq(&eq, want, 400, &b) == GAL_OK, "find_eq: %s", gal_error_message());
+        CHECK(eq.tangent == NULL, "case %d: the tangent is released", v);
+        CHECK(same_modes(&a, &b), "case %d: find_eq gives find's modes to the last bit", v);
+        CHECK(gal_modes_solve_eq(&eq, 9, &d) == GAL_OK, "solve_eq: %s", gal_error_message());
+        CHECK(same_modes(&c, &d), "case %d: solve_eq (no tangent left) gives solve's modes", v);
+        gal_modes_clear(&a); gal_modes_clear(&b); gal_modes_clear(&c); gal_modes_clear(&d);
+        gal_equilibrium_clear(&eq);
+    }
+    gal_equilibrium eq;
+    gal_modes a, b;
+    p.ecc_mass = 0, p.mass -= 0.6;
+    CHECK(gal_statics_solve(&p, GAL_BY_TENSION, 28000, NULL, &eq) == GAL_OK, "statics: %s", gal_error_message());
+    CHECK(gal_modes_solve(eq.rod, eq.q, 9, &a) == GAL_OK, "solve: %s", gal_error_message());
+    CHECK(gal_modes_solve_eq(&eq, 9, &b) == GAL_OK, "solve_eq: %s", gal_error_message());
+    CHECK(same_modes(&a, &b), "solve_eq with the tangent gives solve's modes to the last bit");
+    gal_modes_clear(&a); gal_modes_clear(&b);
+    gal_equilibrium_clear(&eq);
+}
+
 int main(void)
 {
+    RUN(test_handover);
     RUN(test_family_shifts);
     RUN(test_out_of_plane_and_antisymmetric);
     RUN(test_symmetric_below_crossover);

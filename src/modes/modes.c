@@ -419,7 +419,8 @@ int gal_modes_run(gal_modes_ctx *c, int nev, double sigma, int below, gal_modes 
     return st;
 }
 
-int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out)
+/* gal_modes_solve with a tangent handed over (or NULL). */
+static int solve_with(const gal_rod *rod, const double *q, gal_tangent *t, int nev, gal_modes *out)
 {
     double t0 = gal_wall_time();
     memset(out, 0, sizeof *out);
@@ -428,10 +429,22 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
         return gal_error(GAL_EINPUT, "modes: %d modes asked of a system with %d degrees of freedom "
                          "(allowed: 1 to %d)", nev, n, n - 1);
     gal_modes_ctx c;
-    int st = gal_modes_ctx_init(&c, rod, q, NULL);
+    int st = gal_modes_ctx_init(&c, rod, q, t);
     if (st) return st;
     st = gal_modes_run(&c, nev, 0, 1, out);
     gal_modes_ctx_clear(&c);
     out->wall_time_s = gal_wall_time() - t0;
+    return st;
+}
+
+int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out)
+{
+    return solve_with(rod, q, NULL, nev, out);
+}
+
+int gal_modes_solve_eq(gal_equilibrium *eq, int nev, gal_modes *out)
+{
+    int st = solve_with(eq->rod, eq->q, eq->tangent, nev, out);
+    eq->tangent = gal_tangent_free(eq->tangent); /* taken over, or of no use now */
     return st;
 }

@@ -38,7 +38,7 @@ static int run_gallop(void *arg, double *out)
         gal_equilibrium eq;
         gal_modes md;
         double t0 = bench_cpu();
-        if (gal_statics_solve(&p, GAL_BY_TENSION, 28000, NULL, &eq) || gal_modes_solve(eq.rod, eq.q, NMODES, &md)) {
+        if (gal_statics_solve(&p, GAL_BY_TENSION, 28000, NULL, &eq) || gal_modes_solve_eq(&eq, NMODES, &md)) {
             fprintf(stderr, "bench_ccx: %s\n", gal_error_message());
             return 1;
         }

@@ -55,6 +55,9 @@ typedef struct gal_modes {
 /* The `nev` lowest modes about configuration q (an equilibrium). GAL_EFAIL when K - sigma M is
  * not positive definite (the equilibrium is unstable) or ARPACK fails (its info is reported). */
 int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out);
+/* The same about the equilibrium the statics found, taking over its tangent and analysis as
+ * gal_modes_find_eq does. */
+int gal_modes_solve_eq(gal_equilibrium *eq, int nev, gal_modes *out);
 
 /* Enough modes to hold `want[f]` modes of each family f (vertical, horizontal, torsional; axial
  * ignored), the lowest want[f] of each family marked selected. The flexural families from the
