@@ -34,6 +34,7 @@ limited() {
 }
 limited 400000 20000 0 "" "the case that hung with a thread pool"
 limited 400000 50000 1 "out of memory" "too large for the limit"
+limited 400000 60000 1 "out of memory" "out of memory in the statics' factorization: memory, not an indefinite tangent"
 limited 300000 80000 1 "out of memory" "out of memory building the rod: exit 1, not 2"
 limited 200000 20000 1 "memory" "no room for the BLAS buffer"
 

@@ -111,8 +111,9 @@ static int factor_shifted(newton_ws *w, int it)
     double mu = 0;
     int max_tries = w->descent ? 40 : 8;
     for (int tries = 0; ; tries++) {
-        if (gal_chol_factor(w->chol, w->K, mu, w->mdiag) == GAL_OK && !(w->descent && w->chol->negative_pivots))
-            return GAL_OK;
+        int st = gal_chol_factor(w->chol, w->K, mu, w->mdiag);
+        if (st == GAL_ENOMEM) return st; /* memory is memory, not an indefinite tangent */
+        if (st == GAL_OK && !(w->descent && w->chol->negative_pivots)) return GAL_OK;
         if (tries >= max_tries) return gal_error(GAL_EFAIL, "statics: the tangent stiffness stays indefinite at Newton iteration %d", it);
         /* descent: small factors, the shift just above the most negative curvature */
         mu = mu == 0 ? (w->descent ? 1e-14 : 1e-8) * kmax : mu * (w->descent ? 4 : 100);
