@@ -74,5 +74,25 @@ rc=$?
 [ $rc -eq 2 ] && grep -q "needs \[wind\] turbulence" "$tmp/err" && ok "turbulence none: exit 2 with the reason" \
   || bad "turbulence none: exit $rc: $(cat "$tmp/err")"
 [ -e "$tmp/none" ] && bad "turbulence none wrote output" || ok "turbulence none writes nothing"
+# the vertical component: w columns, its statistics in summary.json and on stdout; the turbulence
+# effect off removes both components from the simulations, and `gallop wind` says so on stderr
+"$GALLOP" wind "$tmp/iced.ini" "$@" --set wind.vertical_turbulence=on --points 3 -o "$tmp/v" >"$tmp/vout" 2>"$tmp/verr"
+[ "$(head -n 1 "$tmp/v/wind.csv")" = "time_s,u_x0m,u_x100m,u_x200m,w_x0m,w_x100m,w_x200m" ] && ok "vertical: w columns" \
+  || bad "vertical header: $(head -n 1 "$tmp/v/wind.csv")"
+grep -q '"vertical_turbulence": "on"' "$tmp/v/summary.json" && grep -q '"vertical": {' "$tmp/v/summary.json" \
+  && grep -q "vertical w: I_w = 0.075" "$tmp/vout" && ok "vertical: statistics in summary.json and on stdout" \
+  || bad "vertical statistics: $(grep -c vertical "$tmp/v/summary.json") $(cat "$tmp/vout")"
+# sd of w at x = 0, a point of the field, within 15% of the sigma its discrete spectrum carries (the
+# Kaimal w spectrum, L_w = 4.62 m, has a fifth of its variance above the 10 Hz Nyquist frequency;
+# 600 s); between the field's points the linear interpolation lowers the point variance of the
+# high frequencies, whose coherence over 2.4 m is low (windfield.h)
+sw=$(grep -A4 '"vertical": {' "$tmp/v/summary.json" | grep discrete_sigma | sed 's/.*: *//; s/,//')
+awk -F, -v sw="${sw:-0}" 'NR > 1 { s += $5; s2 += $5 * $5; n++ } END { m = s / n; sd = sqrt(s2 / n - m * m);
+  printf "%.4f %.4f of %.4f", m, sd, sw; exit (m < -0.1 || m > 0.1 || sd < sw * 0.85 || sd > sw * 1.15) }' "$tmp/v/wind.csv" >"$tmp/wm" \
+  && ok "w at x = 0: mean ~0, sd within 15% of the discrete sigma ($(cat "$tmp/wm"))" || bad "w moments: $(cat "$tmp/wm")"
+[ -s "$tmp/verr" ] && bad "a note with the effect on: $(cat "$tmp/verr")" || ok "effect on: nothing on stderr"
+"$GALLOP" wind "$tmp/iced.ini" "$@" --set wind.vertical_turbulence=on --set effects.turbulence=off -o "$tmp/voff" >/dev/null 2>"$tmp/verr"
+grep -q "turbulence = off: simulations use neither the along-wind field nor the vertical one" "$tmp/verr" \
+  && ok "effect off: the note on stderr" || bad "effect off: $(cat "$tmp/verr")"
 echo "#summary $pass $fail"
 [ $fail -eq 0 ]

@@ -212,7 +212,7 @@ static void test_scene_field(void)
     double tgt = sqrt(discrete_target(&p));
     printf("    scene field: sigma_w %.4f m/s (target %.4f below Nyquist, 0.72 in all), corr(u, w) "
            "%+.3f\n", sdw, tgt, r);
-    /* 65 points x 61 s, the points 3 m apart: a short record, ~10% sampling error; u and w
+    /* 85 points x 61 s, the points 2.4 m apart (U / (C 0.5 Hz)): a short record, ~10% sampling error; u and w
      * independent: |r| small */
     CHECK_REL(sdw, tgt, 0.1);
     CHECK(fabs(r) < 0.1, "u and w correlated: %g", r);
@@ -232,11 +232,15 @@ static void test_angle_of_attack(void)
     gal_loads L = {.table = t, .flags = GAL_AERO_ALL, .rho = 1.25, .diam = 0.03, .speed = 10,
                    .dir = {0, 1, 0}, .nx = 2, .nt = 2, .dx = 100, .dt = 1, .u = u, .w = w};
     double wind[3];
-    gal_loads_wind(&L, 0.25, 50, wind);     /* bilinear: w = (1-a)(1.5) + a (3.5), a = 0.25 */
-    CHECK_NEAR(wind[2], 0.75 * 1.5 + 0.25 * 3.5, 1e-12);
+    /* linear in x (1.5, 3.5 at x = 50), Catmull-Rom in t through the periodic record
+     * 3.5, 1.5 | 3.5, 1.5 at a = 0.25: weights (-0.0703125, 0.8671875, 0.2265625, -0.0234375) */
+    gal_loads_wind(&L, 0.25, 50, wind);
+    double wz = -0.0703125 * 3.5 + 0.8671875 * 1.5 + 0.2265625 * 3.5 - 0.0234375 * 1.5;
+    CHECK_NEAR(wz, 1.8125, 1e-15);
+    CHECK_NEAR(wind[2], wz, 1e-12);
     CHECK_NEAR(wind[1], 10.5, 1e-12);
     double tan[3] = {1, 0, 0}, d1[3] = {0, 1, 0}, r[3] = {0}, rd[3] = {0}, f[3], m, fr[3], mr;
-    CHECK_NEAR(gal_aero_alpha(tan, d1, wind), atan2(2.0, 10.5), 1e-12);
+    CHECK_NEAR(gal_aero_alpha(tan, d1, wind), atan2(wz, 10.5), 1e-12);
     CHECK(gal_loads_point(&L, 0.25, 50, r, rd, tan, d1, f, &m) == GAL_OK, "point");
     CHECK(gal_aero_load(t, tan, d1, wind, 1.25, 0.03, GAL_AERO_ALL, fr, &mr) == GAL_OK, "load");
     for (int k = 0; k < 3; k++) CHECK_NEAR(f[k], fr[k], 1e-12 * (1 + fabs(fr[k])));

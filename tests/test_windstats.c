@@ -23,13 +23,17 @@ static void test_points(void)
     CHECK(w != NULL, "%s", gal_error_message());
     if (!w) return;
     gal_wind_stats s;
-    CHECK(gal_wind_stats_compute(w, 12, 5, &s) == GAL_OK && s.np == 5, "5 points");
+    CHECK(gal_wind_stats_compute(w, 12, 200, 5, &s) == GAL_OK && s.np == 5, "5 points");
     int want[5] = {0, 16, 32, 48, 64};
     for (int i = 0; i < 5; i++) CHECK(s.pt[i] == want[i], "point %d at %d, want %d", i, s.pt[i], want[i]);
-    CHECK(gal_wind_stats_compute(w, 12, 1, &s) == GAL_OK && s.np == 1 && s.pt[0] == 32, "one point: mid-span");
-    CHECK(gal_wind_stats_compute(w, 12, 3, &s) == GAL_OK && s.pt[1] == 32 && s.pt[2] == 64, "three points");
-    CHECK(gal_wind_stats_compute(w, 12, 0, &s) == GAL_EINPUT, "0 points refused");
-    CHECK(gal_wind_stats_compute(w, 12, GAL_WINDFIELD_POINTS + 1, &s) == GAL_EINPUT, "66 points refused");
+    CHECK(gal_wind_stats_compute(w, 12, 200, 1, &s) == GAL_OK && s.np == 1 && s.pt[0] == 32, "one point: mid-span");
+    CHECK(gal_wind_stats_compute(w, 12, 200, 3, &s) == GAL_OK && s.pt[1] == 32 && s.pt[2] == 64, "three points");
+    CHECK(gal_wind_stats_compute(w, 12, 200, 0, &s) == GAL_EINPUT, "0 points refused");
+    CHECK(gal_wind_stats_compute(w, 12, 200, GAL_WINDFIELD_POINTS + 1, &s) == GAL_EINPUT, "66 points refused");
+    /* between the field's points: linear, at x = 50 m on a 3.125 m grid after a 190 m span */
+    CHECK(gal_wind_stats_compute(w, 12, 190, 5, &s) == GAL_OK, "%s", gal_error_message());
+    CHECK(s.pt[1] == 15 && fabs(s.frac[1] - (47.5 / 3.125 - 15)) < 1e-12 && s.x[4] == 190, "x = 47.5 between 15, 16");
+    CHECK_NEAR(gal_wind_stats_u(w, &s, 1, 7), 0.8 * gal_wind_u(w, 15, 7) + 0.2 * gal_wind_u(w, 16, 7), 1e-12);
     gal_wind_free(w);
 }
 
@@ -39,7 +43,7 @@ static void test_moments_exact(void)
     gal_wind *w = field(10);
     if (!w) { CHECK(0, "%s", gal_error_message()); return; }
     gal_wind_stats s;
-    CHECK(gal_wind_stats_compute(w, 12, 65, &s) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_wind_stats_compute(w, 12, 200, 65, &s) == GAL_OK, "%s", gal_error_message());
     double sigma = sqrt(gal_wind_variance(w));
     CHECK(sigma > 0.5 && sigma < 1.8, "discrete sigma %g against I U = 1.8", sigma);
     CHECK_NEAR(s.mean[0], 12, 1e-12 * 12);
@@ -63,7 +67,7 @@ static void test_full_coherence(void)
     gal_wind *w = field(0);
     if (!w) { CHECK(0, "%s", gal_error_message()); return; }
     gal_wind_stats s;
-    CHECK(gal_wind_stats_compute(w, 12, 5, &s) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_wind_stats_compute(w, 12, 200, 5, &s) == GAL_OK, "%s", gal_error_message());
     double sigma = sqrt(gal_wind_variance(w));
     for (int i = 0; i < 5; i++) CHECK_REL(s.sd[i], sigma, 1e-9);
     gal_wind_free(w);

@@ -316,9 +316,10 @@ int gal_acc_study_front(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
     int st = constants(&S, &base);
     if (st) return gal_error(st, "front: %s: %s", sc->path, gal_error_message());
     if (S.turbulent)
-        snprintf(F->note, sizeof F->note, "turbulent wind: every measure is averaged over %d seeds; the wind is drawn "
-                 "at the mesh's points, so meshes see different realizations: their errors include the statistics' "
-                 "own scatter (the reference's estimated error gives it)", F->nseeds);
+        snprintf(F->note, sizeof F->note, "turbulent wind: every measure is the mean over %d seeds (wind.seed to "
+                 "wind.seed + %d), every configuration on the same realizations (the field is the span's and the "
+                 "seed's, not the mesh's); amplitudes are RMS, the frequency the spectral peak; the reference's "
+                 "estimated error includes the seeds' standard error", F->nseeds, F->nseeds - 1);
     if ((st = gal_acc_reference(&S, &base))) return st;
     return gal_acc_pareto(&S, &base);
 }

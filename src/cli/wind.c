@@ -46,22 +46,31 @@ int gal_cli_wind(int argc, char **argv)
                 "turbulence = none has no field\n", sc.path);
         return 2;
     }
-    gal_wind *w = gal_wind_alloc(&wp);
-    if (!w) {
+    gal_wind_params wpv;
+    int vert = sc.wind.vertical_turbulence && gal_windfield_params_vertical(&sc, &wpv) == GAL_OK;
+    gal_wind *w = gal_wind_alloc(&wp), *wv = vert && w ? gal_wind_alloc(&wpv) : NULL;
+    if (!w || (vert && !wv)) {
         fprintf(stderr, "gallop wind: %s: [wind]: %s\n", sc.path, gal_error_message());
+        gal_wind_free(w);
         return 2;
     }
+    if (!sc.effect[GAL_FX_TURBULENCE])
+        fprintf(stderr, "gallop wind: note: %s: [effects] turbulence = off: simulations use neither the along-wind "
+                "field%s (this is the field they would use with it on)\n", sc.path, vert ? " nor the vertical one" : "");
     double tg = gal_wall_time();
     st = gal_wind_generate(w);
+    if (!st && wv) st = gal_wind_generate(wv);
     double gen = gal_wall_time() - tg;
-    gal_wind_stats ws;
-    if (!st) st = gal_wind_stats_compute(w, wp.speed, np, &ws);
-    gal_wind_report r = {&sc, &wp, w, &ws, gen};
+    gal_wind_stats ws, wvs;
+    if (!st) st = gal_wind_stats_compute(w, wp.speed, sc.span.length, np, &ws);
+    if (!st && wv) st = gal_wind_stats_compute(wv, 0.0, sc.span.length, np, &wvs);
+    gal_wind_report r = {&sc, &wp, w, &ws, gen, vert ? &wpv : NULL, wv, vert ? &wvs : NULL};
     if (!st) st = gal_wind_write(outdir, &r, gal_wall_time() - t0);
     if (!st) {
         gal_wind_print(stdout, &r);
         printf("files: %s/{wind.csv,summary.json}\n", outdir);
     }
     gal_wind_free(w);
+    gal_wind_free(wv);
     return st ? fail(st) : 0;
 }

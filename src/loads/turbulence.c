@@ -1,15 +1,38 @@
 /* turbulence.c: the turbulence of a scene in one place (DESIGN.md "Wind"): the parameters of its
  * along-wind field u and, with [wind] vertical_turbulence = on, of its vertical field w (the
  * spectral-representation generator of wind.c; the spectra in gallop/loads/wind.h) from the
- * scene's [wind], [span] and [simulation], both sampled on the loads' grid, and the terms of the
- * relative wind that interpolate them bilinearly in time and span position, ramped in with the
- * mean wind. */
+ * scene's [wind], [span] and [simulation], both sampled on the loads' grid (points a physical
+ * spacing apart, windfield.h: the same wind whatever the mesh), and the terms of the relative wind
+ * that interpolate them, linearly in span position and by Catmull-Rom cubics in time (C1: no kink
+ * at the samples for an adaptive integrator to stop at), ramped in with the mean wind. */
 #include "gallop/loads/windfield.h"
 #include "gallop/loads/loads.h"
 #include "gallop/base/core.h"
 
 #include <math.h>
 #include <stdlib.h>
+
+double gal_windfield_spacing(const gal_scene *sc)
+{
+    double C = sc->wind.coherence_decay, U = sc->wind.speed;
+    double dx = C > 0 ? U / (C * GAL_WINDFIELD_FREQUENCY) : GAL_WINDFIELD_SPACING_MAX;
+    return fmin(fmax(dx, GAL_WINDFIELD_SPACING_MIN), GAL_WINDFIELD_SPACING_MAX); /* NaN: the max */
+}
+
+/* the least n' >= n with no prime factor above 5 (a fast FFT length); n itself when none is found
+ * below 2 n */
+static double smooth_length(double n)
+{
+    if (!(n >= 1 && n < 1e9)) return n;
+    for (long m = (long)ceil(n); m < 2 * (long)ceil(n); m++) {
+        long r = m;
+        while (r % 2 == 0) r /= 2;
+        while (r % 3 == 0) r /= 3;
+        while (r % 5 == 0) r /= 5;
+        if (r == 1) return (double)m;
+    }
+    return n;
+}
 
 int gal_windfield_params(const gal_scene *sc, gal_wind_params *p)
 {
@@ -23,10 +46,13 @@ int gal_windfield_params(const gal_scene *sc, gal_wind_params *p)
     p->coherence_decay = sc->wind.coherence_decay;
     if (sc->wind.height > 0) p->height = sc->wind.height;          /* else the default 10 m */
     p->length_scale = sc->wind.length_scale;                       /* 0: the spectrum's own */
-    p->points = GAL_WINDFIELD_POINTS;
-    p->spacing = sc->span.length / (GAL_WINDFIELD_POINTS - 1);
+    p->spacing = gal_windfield_spacing(sc);
+    double nx = ceil(sc->span.length / p->spacing - 1e-9); /* the last point at or just past the span */
+    p->points = nx >= 1 && nx < 1e6 ? (int)nx + 1 : (nx >= 1 ? 1000001 : 2); /* too many: refused by the check */
     p->time_step = GAL_WINDFIELD_TIME_STEP;
-    p->duration = sc->simulation.duration + GAL_WINDFIELD_EXTRA_TIME;
+    /* the record outlasts the run, its sample count a fast FFT length */
+    double n = smooth_length(ceil((sc->simulation.duration + GAL_WINDFIELD_EXTRA_TIME) / p->time_step - 1e-9));
+    p->duration = n * p->time_step;
     p->seed = (unsigned long)sc->wind.seed;
     return GAL_OK;
 }
@@ -57,9 +83,10 @@ static int sample(const gal_scene *sc, const gal_wind_params *p, double *dst, in
     if (!st) {
         *nx = gal_wind_points(w), *nt = gal_wind_samples(w);
         *dx = gal_wind_spacing(w), *dt = gal_wind_time_step(w);
-        if (dst)
-            for (int k = 0; k < *nt; k++)
-                for (int j = 0; j < *nx; j++) dst[(size_t)k * *nx + j] = gal_wind_u(w, j, k);
+        for (int j = 0; dst && j < *nx; j++) {
+            const double *h = gal_wind_history(w, j);
+            for (int k = 0; k < *nt; k++) dst[(size_t)k * *nx + j] = h[k];
+        }
     }
     gal_wind_free(w);
     return st;
@@ -87,24 +114,30 @@ int gal_windfield_sample(const gal_scene *sc, gal_loads *L, double **u)
     return GAL_OK;
 }
 
-/* a field on the grid at (t, x), bilinear in (t, x); the field repeats after its duration */
+/* a field on the grid at (t, x): linear in x between the field's points (clamped to the ends),
+ * Catmull-Rom in t through the samples k-1 .. k+2 (the record is periodic: nt samples, dt apart) */
 static double field_at(const gal_loads *L, const double *F, double t, double x)
 {
-    double ft = t / L->dt, period = (double)(L->nt - 1);
-    ft = fmod(ft, period);
-    if (ft < 0) ft += period;
+    double ft = t / L->dt, period = (double)L->nt;
+    ft -= period * floor(ft / period);
     int k = (int)ft;
-    if (k >= L->nt - 1) k = L->nt - 2;
-    double a = ft - k;
+    if (k >= L->nt) k = 0, ft = 0;
+    double a = ft - k, a2 = a * a, a3 = a2 * a;
+    double c[4] = {0.5 * (-a3 + 2 * a2 - a), 0.5 * (3 * a3 - 5 * a2 + 2), 0.5 * (-3 * a3 + 4 * a2 + a),
+                   0.5 * (a3 - a2)};
     double fx = L->nx > 1 ? (x - L->x0) / L->dx : 0;
-    if (fx < 0) fx = 0;
-    if (fx > L->nx - 1) fx = L->nx - 1;
+    fx = fx < 0 ? 0 : fx > L->nx - 1 ? L->nx - 1 : fx;
     int j = (int)fx;
     if (j >= L->nx - 1) j = L->nx > 1 ? L->nx - 2 : 0;
-    double b = L->nx > 1 ? fx - j : 0;
-    const double *u0 = F + (size_t)k * L->nx, *u1 = u0 + L->nx;
+    double b = L->nx > 1 ? fx - j : 0, v = 0;
     int j1 = L->nx > 1 ? j + 1 : j;
-    return (1 - a) * ((1 - b) * u0[j] + b * u0[j1]) + a * ((1 - b) * u1[j] + b * u1[j1]);
+    for (int i = 0; i < 4; i++) {
+        int ki = k - 1 + i;
+        ki = ki < 0 ? ki + L->nt : ki >= L->nt ? ki - L->nt : ki;
+        const double *row = F + (size_t)ki * L->nx;
+        v += c[i] * ((1 - b) * row[j] + b * row[j1]);
+    }
+    return v;
 }
 
 /* the along-wind fluctuation u(t, x) */

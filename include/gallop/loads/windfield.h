@@ -14,14 +14,36 @@ extern "C" {
 
 struct gal_loads;
 
-#define GAL_WINDFIELD_POINTS 65       /* points along the span, supports included */
+#define GAL_WINDFIELD_POINTS 65       /* most points `gallop wind` reports statistics at */
+/* The field's points along the span are a property of the wind and the span, never of the mesh:
+ * x_j = j dx, j = 0 .. ceil(span.length / dx), with
+ *     dx = U / (C f_c)  clamped to [GAL_WINDFIELD_SPACING_MIN, GAL_WINDFIELD_SPACING_MAX],
+ * the coherence length at f_c = GAL_WINDFIELD_FREQUENCY (coh(f_c, dx) = exp(-1)): galloping
+ * is in the first vertical modes of a span, 0.1 to 0.5 Hz (CIGRE TB 322), so the field is resolved
+ * below one coherence length at every frequency that drives it. A mesh samples the field by
+ * linear interpolation in x between these points (turbulence.c): the field is the same at the
+ * same point whatever the mesh (and, the random phases being drawn point by point from x = 0, the
+ * same on the common part of two spans). Linear because the grid is below the coherence length:
+ * the spatially integrated (modal) load, which is what excites the span, is then within
+ * (dx / 2 Lc) coth(dx / 2 Lc) - 1 <= 8% of the continuous field's variance at f_c and < 1% at
+ * the 0.02-0.1 Hz where a Kaimal spectrum holds most of its energy (Lc = U / (C f)). Between
+ * the points the interpolated field's point variance at frequency f is lower, by
+ * 1 - 2 a (1 - a) (1 - r), r = exp(-C f dx / U), a the fraction of the way (at f_c mid-way: 16%):
+ * what the load over an element sees, not a point anemometer. */
+#define GAL_WINDFIELD_FREQUENCY 0.5   /* Hz, f_c above */
+#define GAL_WINDFIELD_SPACING_MIN 1.0 /* m */
+#define GAL_WINDFIELD_SPACING_MAX 4.0 /* m */
 #define GAL_WINDFIELD_TIME_STEP 0.05  /* s: 20 Hz */
-#define GAL_WINDFIELD_EXTRA_TIME 1.0  /* s: the record outlasts the run by this much */
+#define GAL_WINDFIELD_EXTRA_TIME 1.0  /* s: the record outlasts the run by at least this much */
 #define GAL_WINDFIELD_VERTICAL_SEED 2654435769UL /* added to wind.seed (mod 2^32) for w */
 
+/* The spacing dx (m) of the field's points for this scene (above). */
+double gal_windfield_spacing(const gal_scene *sc);
+
 /* Fill p from the scene: mean speed, intensity, spectrum, coherence decay and seed of [wind];
- * GAL_WINDFIELD_POINTS points spaced span.length / (GAL_WINDFIELD_POINTS - 1) apart;
- * dt = GAL_WINDFIELD_TIME_STEP; duration = simulation.duration + GAL_WINDFIELD_EXTRA_TIME; the
+ * points gal_windfield_spacing(sc) apart from x = 0 to span.length or just past it;
+ * dt = GAL_WINDFIELD_TIME_STEP; duration = simulation.duration + GAL_WINDFIELD_EXTRA_TIME
+ * rounded up to a sample count with no prime factor above 5 (a fast FFT: at most 8% longer); the
  * other fields take gal_wind_params_default's values. The parameters are not validated here
  * (gal_wind_alloc does it). GAL_EINPUT with a message when [wind] turbulence is none. */
 int gal_windfield_params(const gal_scene *sc, gal_wind_params *p);

@@ -1,5 +1,5 @@
-/* windreport.h: the outputs of `gallop wind`: wind.csv (U + u at the points), summary.json, a
- * table. */
+/* windreport.h: the outputs of `gallop wind`: wind.csv (U + u, and w when on, at the points),
+ * summary.json, a table. */
 #ifndef GALLOP_OUTPUT_WINDREPORT_H
 #define GALLOP_OUTPUT_WINDREPORT_H
 
@@ -12,13 +12,18 @@
 extern "C" {
 #endif
 
-/* The field of scene sc generated from wp in gen_time_s; its statistics s. */
+/* The field of scene sc generated from wp in gen_time_s; its statistics s; with
+ * wind.vertical_turbulence = on the vertical field wv from wpv and its statistics sv at the same
+ * points (NULL when off). */
 typedef struct gal_wind_report {
     const gal_scene *sc;
     const gal_wind_params *wp;
     const gal_wind *w;
     const gal_wind_stats *s;
-    double gen_time_s;   /* generation, s */
+    double gen_time_s;   /* generation, s (both components) */
+    const gal_wind_params *wpv;
+    const gal_wind *wv;
+    const gal_wind_stats *sv;
 } gal_wind_report;
 
 /* DIR/wind.csv and DIR/summary.json. */
