@@ -35,9 +35,7 @@
 #include "gallop/loads/windfield.h"
 /* full: the full model's time integration */
 #include "gallop/full/dynamics.h"
-/* reduced: the reduced (modal) model and its time integration */
-#include "gallop/reduced/reduced.h"
-#include "gallop/reduced/rdyn.h"
+/* reduced: the reduced model (modes and modal derivatives, recomputed forces) */
 #include "gallop/reduced/rom.h"
 #include "gallop/reduced/ecsw.h"
 #include "gallop/reduced/rom_adapt.h"

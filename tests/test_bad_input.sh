@@ -182,8 +182,13 @@ key model_modes_negative    model "modes_vertical = -1"
 key model_modes_fraction    model "modes_vertical = 2.5"
 key model_modes_huge        model "modes_horizontal = 201"
 key model_modes_text        model "modes_torsional = x"
-key model_id_amp_negative   model "identification_amplitude = -1"
-key model_id_twist_90       model "identification_twist = 91"
+# keys of the removed identified reduced model (issue 13): refused naming the key and what replaced it
+key model_id_amp_retired    model "identification_amplitude = 2" "identification_amplitude = 2: no longer a key"
+key model_id_amp_replaced   model "identification_amplitude = 2" "model.residual_tolerance"
+key model_id_twist_retired  model "identification_twist = 45" "identification_twist = 45: no longer a key"
+key model_id_twist_replaced model "identification_twist = 45" "model.on_invalid"
+key model_reduced_identified model "reduced = identified" "removed (issue 13); allowed: recomputed"
+key model_reduced_other     model "reduced = polynomial" "allowed: recomputed"
 key model_unknown_key       model "order = 2"
 # ---- [simulation] ----
 key sim_duration_zero       simulation "duration = 0"
@@ -225,6 +230,9 @@ printf '[span]\nhorizontal_tension = 25000\n[conductor]\nname = Drake\n' >"$tmp/
 refused missing_length "$tmp/nolength.ini" 0 "length"
 # --set: the same checks, reported as "--set"
 refused set_elements_negative "$tmp/base.ini" -1 "elements" --set model.elements=-1
+refused set_id_twist_retired "$tmp/base.ini" -1 "identification_twist = 30: no longer a key" \
+    --set model.identification_twist=30
+refused set_id_amp_replaced "$tmp/base.ini" -1 "model.modes_vertical" --set model.identification_amplitude=1
 refused set_probes_duplicate "$tmp/base.ini" -1 "repeats probe 1" --set simulation.probes=0.5,0.5
 refused set_table_bad "$tmp/base.ini" -1 "aero_table" --set ice.aero_table="$tmp/base.ini"
 

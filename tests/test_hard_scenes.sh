@@ -152,19 +152,19 @@ for model in reduced full; do
     fi
 done
 
-# twist past 360 deg: the full model; the reduced model (a basis identified on small twists) may
-# refuse with a reason
+# twist past 360 deg: the full model; the reduced model may refuse, its self-check giving the reason
 if zero_heap run twist_accumulation.full simulate "$H/twist_accumulation.ini" --model full; then
     tw=$(awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i ~ /_twist_deg$/) c[i]=1}
          NR>1{for(i in c){v=$i<0?-$i:$i; if(v>mx)mx=v}} END{printf "%.1f", mx}' "$tmp/twist_accumulation.full/trace.csv")
     awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation full: max |twist| $tw deg" \
         || bad "twist_accumulation full: max |twist| only $tw deg"
 fi
-# Today the reduced model's fitted restoring force cannot follow several turns and its integrator
-# gives up ("reduced model: the step size fell to ..."): a refusal with the stage named, nothing
-# written. The reduced-model issue (#13: coupling recomputed from the rod) must make it follow the
-# twist; then may_refuse goes and the twist check below must hold.
-if may_refuse="reduced model" run twist_accumulation.reduced simulate "$H/twist_accumulation.ini" --model reduced; then
+# The reduced model (issue 13: coupling recomputed from the rod, self-checked) on 1 torsional mode
+# and its modal derivatives does not follow several turns: its self-check finds the residual grown
+# in the torsional family within the first seconds and stops (exit 1, the family and the keys
+# named, nothing written), where the identified model gave up on a step size. When it follows the
+# twist (adaptation: issue 13's remaining part), the twist check below must hold.
+if may_refuse="residual grew to .* in the torsional family" run twist_accumulation.reduced simulate "$H/twist_accumulation.ini" --model reduced; then
     tw=$(json twist_amplitude_deg "$tmp/twist_accumulation.reduced/summary.json")
     awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation reduced: twist p-p $tw deg" \
         || bad "twist_accumulation reduced: exit 0 with twist p-p only $tw deg where the full model turns past 360"

@@ -1,7 +1,8 @@
 /* test_pipeline.c: the pipeline (run/forward.h) and the run loop (run/sim.h): gal_forward stops at
  * the stage asked for and goes on from there; a failing stage leaves the data at the one before; the
  * model is the same, byte for byte, after every stage and both integrators have run on it; no stage
- * writes into the rod's pattern; two data of one model reach identical results. */
+ * writes into the rod's pattern; two data of one model reach identical results; the reduced stage
+ * refuses a mode at 0 Hz. */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/model/model.h"
@@ -31,7 +32,7 @@ static void test_stops_at_the_stage_asked(void)
     CHECK(d && d->stage == GAL_STAGE_NONE, "a new data has no stage done");
     CHECK(gal_forward(m, d, GAL_STAGE_EQUILIBRIUM) == GAL_OK, "%s", gal_error_message());
     CHECK(d->stage == GAL_STAGE_EQUILIBRIUM && d->eq.rod && d->eq.q, "equilibrium done");
-    CHECK(d->md.n == 0 && !d->md.mode && !d->q_start && !d->rm, "nothing after the equilibrium");
+    CHECK(d->md.n == 0 && !d->md.mode && !d->q_start && d->basis == 0, "nothing after the equilibrium");
     CHECK(d->eq.sag > 0 && d->eq.unstretched_length > 0, "a sagged span");
     CHECK(gal_forward(m, d, GAL_STAGE_MODES) == GAL_OK, "%s", gal_error_message());
     CHECK(d->stage == GAL_STAGE_MODES && d->md.n > 0, "modes done");
@@ -42,14 +43,19 @@ static void test_stops_at_the_stage_asked(void)
     CHECK(d->damping && (m->damping_ratio == 0 || (d->damping->kind == GAL_DAMPING_MODAL && d->damping->nb > 0 &&
                                                     d->damping->zeta == m->damping_ratio)),
           "the structural damping built at the modes");
-    CHECK(!d->q_start && !d->rm, "nothing after the modes");
+    CHECK(!d->q_start && d->basis == 0, "nothing after the modes");
     const gal_rod *rod = d->eq.rod;
     CHECK(gal_forward(m, d, GAL_STAGE_START) == GAL_OK, "%s", gal_error_message());
     CHECK(d->stage == GAL_STAGE_START && d->q_start && d->loads.rod == rod && d->loads.table, "start done");
-    CHECK(!d->rm, "no reduced model before it is asked for");
+    CHECK(d->basis == 0, "no reduced basis before it is asked for");
     CHECK(d->eq.rod == rod, "earlier stages are not repeated");
     CHECK(gal_forward(m, d, GAL_STAGE_REDUCED) == GAL_OK, "%s", gal_error_message());
-    CHECK(d->stage == GAL_STAGE_REDUCED && d->rm && d->basis == sel, "reduced model on the %d selected modes", sel);
+    CHECK(d->stage == GAL_STAGE_REDUCED && d->basis == sel, "reduced basis on the %d selected modes", sel);
+    int in_order = 1;
+    for (int i = 0; i < d->basis; i++)
+        in_order &= d->md.mode[d->sel[i]].selected && (i == 0 || d->sel[i] > d->sel[i - 1]) &&
+                    d->md.mode[d->sel[i]].frequency_hz >= GAL_MODE_FLOOR_HZ;
+    CHECK(in_order, "the basis modes are the selected ones, in order, none at 0 Hz");
     CHECK(gal_forward(m, d, GAL_STAGE_MODES) == GAL_OK && d->stage == GAL_STAGE_REDUCED, "asking less undoes nothing");
     CHECK(gal_forward(m, d, GAL_STAGE_COUNT) == GAL_EINPUT, "no stage beyond the last");
     gal_data_free(d);
@@ -71,6 +77,33 @@ static void test_failing_stage(void)
     gal_model *other = model_of("data/scenes/drake_300m.ini", small, 1);
     if (other) CHECK(gal_forward(other, d, GAL_STAGE_MODES) == GAL_EINPUT, "data of another model refused");
     gal_model_free(other);
+    gal_data_free(d);
+    gal_model_free(m);
+}
+
+/* A mode at or near 0 Hz (free end twist: the span turns as a whole) is never taken into the
+ * reduced basis silently: the reduced stage refuses it, naming the key that selects it; the full
+ * model's run needs no basis and is not refused. */
+static void test_zero_hz_mode_refused(void)
+{
+    const char *ov[] = {"model.elements=20", "simulation.duration=2", "span.end_twist=free",
+                        "model.modes_torsional=1"};
+    gal_model *m = model_of("data/scenes/drake_300m.ini", ov, 4);
+    if (!m) return;
+    gal_data *d = gal_data_alloc(m);
+    CHECK(gal_forward(m, d, GAL_STAGE_MODES) == GAL_OK, "%s", gal_error_message());
+    int low = 0;
+    for (int k = 0; k < d->md.n; k++) low |= d->md.mode[k].selected && d->md.mode[k].frequency_hz < GAL_MODE_FLOOR_HZ;
+    CHECK(low, "free twist: the selected torsional mode is at 0 Hz");
+    CHECK(gal_forward(m, d, GAL_STAGE_REDUCED) == GAL_EINPUT, "a 0 Hz mode in the basis is bad input");
+    CHECK(strstr(gal_error_message(), "0 Hz") && strstr(gal_error_message(), "model.modes_torsional") &&
+          strstr(gal_error_message(), "end_twist"), "%s", gal_error_message());
+    CHECK(d->stage == GAL_STAGE_START, "the stages before stay");
+    gal_run_opts o;
+    gal_run_opts_from_scene(&m->sc, &o);
+    gal_sim_result r;
+    CHECK(gal_run(m, d, &gal_integrator_reduced, &o, &r) == GAL_EINPUT, "a reduced run is refused");
+    gal_sim_result_clear(&r);
     gal_data_free(d);
     gal_model_free(m);
 }
@@ -148,7 +181,7 @@ static int same_doubles(const double *a, const double *b, size_t n)
     return (a == NULL) == (b == NULL) && (!a || !memcmp(a, b, n * sizeof(double)));
 }
 
-/* Two data of one model: the same equilibrium, modes, start, reduced model and runs, bit for bit. */
+/* Two data of one model: the same equilibrium, modes, start, reduced basis and runs, bit for bit. */
 static void test_repeatable(void)
 {
     const char *ov[] = {"model.elements=20", "simulation.duration=2", "simulation.start=mean_wind"};
@@ -173,9 +206,7 @@ static void test_repeatable(void)
           same_doubles(a->damping->omega, b->damping->omega, a->damping->nb) &&
           same_doubles(a->damping->mphi, b->damping->mphi, (size_t)a->damping->nb * a->damping->ndof), "damping");
     CHECK(same_doubles(a->q_start, b->q_start, nq) && !same_doubles(a->q_start, a->eq.q, nq), "mean-wind start");
-    CHECK(a->rm->r == b->rm->r && same_doubles(a->rm->A, b->rm->A, (size_t)a->rm->r * a->rm->n3) &&
-          same_doubles(a->rm->obs_nl, b->rm->obs_nl, (size_t)a->rm->nobs * (a->rm->n2 + a->rm->n3 + 2 * a->rm->r)),
-          "reduced model");
+    CHECK(a->basis == b->basis && !memcmp(a->sel, b->sel, sizeof a->sel), "reduced basis modes");
     for (int k = 0; k < 2; k++) {
         const gal_sim_result *x = &r[0][k], *y = &r[1][k];
         CHECK(x->nsamples == y->nsamples && same_doubles(x->trace, y->trace, (size_t)x->nsamples * 4 * x->nprobe) &&
@@ -193,6 +224,7 @@ int main(void)
 {
     RUN(test_stops_at_the_stage_asked);
     RUN(test_failing_stage);
+    RUN(test_zero_hz_mode_refused);
     RUN(test_model_unchanged);
     RUN(test_repeatable);
     return CHECK_SUMMARY();

@@ -281,7 +281,7 @@ static void choose(gal_acc_result *r, gal_acc_study s)
         break;
     case GAL_ACC_MODES:
         snprintf(S->buys, sizeof S->buys, "a reduced basis of %s (vertical/horizontal/torsional) modes integrates in "
-                 "%.3g s (plus %.3g s of identification), %.3gx faster than the full model (%.3g s), with the mid-span "
+                 "%.3g s (plus %.3g s of its own set-up), %.3gx faster than the full model (%.3g s), with the mid-span "
                  "vertical amplitude and frequency within %.3g%%", c->value, c->wall_time_s, c->build_time_s, ratio,
                  ref->wall_time_s, 100 * c->error);
         break;

@@ -58,7 +58,6 @@ static void config_scene(const acc_study *S, const gal_acc_config *c, int seed, 
     *s = *S->sc;
     s->model.elements = c->elements;
     if (c->reduced) {
-        s->model.reduced_recomputed = 1;
         s->model.modes_vertical = c->modes[0], s->model.modes_horizontal = c->modes[1];
         s->model.modes_torsional = c->modes[2];
         s->model.on_invalid_warn = 1; /* an invalid run is scored, not dropped */

@@ -153,10 +153,6 @@ static int options(sweep *S)
     S->kind = model && !strcmp(model, "full") ? GAL_MODEL_FULL : GAL_MODEL_REDUCED;
     if (!st && model && strcmp(model, "full") && strcmp(model, "reduced"))
         st = gal_error(GAL_EINPUT, "--model %s; allowed: reduced, full", model);
-    if (!st && S->g.continuation && S->kind == GAL_MODEL_REDUCED && !S->sc.model.reduced_recomputed)
-        st = gal_error(GAL_EINPUT, "%s: --continuation starts each case from the previous case's state: the "
-                       "identified reduced model cannot; allowed: --model full or --set model.reduced=recomputed",
-                       S->sc.path);
     S->nuser = gal_cli_values(S->c, &S->a, "set", &S->user);
     S->path = S->a.operand;
     if (!st) st = gal_sweep_grid_check(&S->g, S->path, S->user, S->nuser);

@@ -128,9 +128,6 @@ gal_model *gal_model_alloc(const gal_scene *sc, int *status)
     m->damping_ratio = sc->effect[GAL_FX_DAMPING] ? sc->conductor.damping_ratio : 0;
     if ((st = loads(sc, m))) goto done;
     m->start_mean_wind = sc->simulation.start_mean_wind;
-    gal_reduced_default_opts(&m->reduced);
-    m->reduced.amplitude_m = sc->model.identification_amplitude;
-    m->reduced.amplitude_rad = sc->model.identification_twist;
     m->nprobe = sc->simulation.nprobes;
     memcpy(m->probe, sc->simulation.probes, sizeof m->probe);
 done:

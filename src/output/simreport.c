@@ -74,10 +74,9 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     gal_json_kv_int(j, "force_evaluations", r->force_evaluations);
     gal_json_kv_num(j, "time_step_s", r->time_step_s);
     gal_json_kv_int(j, "basis_modes", r->basis);
-    gal_json_kv_int(j, "identification_load_cases", r->load_cases);
     gal_json_obj_end(j);
     if (r->checked) {
-        /* the recomputed reduced model's self-check */
+        /* the reduced model's self-check */
         gal_json_kv_num(j, "residual_max", r->residual_max);
         gal_json_key(j, "valid");
         gal_json_bool(j, r->valid);

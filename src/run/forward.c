@@ -8,8 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "run/probes.h"
-
 const char *const gal_stage_names[GAL_STAGE_COUNT] = {"none", "equilibrium", "modes", "wind", "start", "reduced"};
 
 gal_data *gal_data_alloc(const gal_model *m)
@@ -32,7 +30,6 @@ gal_data *gal_data_free(gal_data *d)
         free(d->wind_u);
         free(d->q_start);
         free(d->v_start);
-        gal_reduced_free(d->rm);
         free(d);
     }
     return NULL;
@@ -116,46 +113,27 @@ int gal_data_start_from(const gal_model *m, gal_data *d, const double *q, const 
     return GAL_OK;
 }
 
-/* ---- the reduced model ---- */
+/* ---- the reduced model's basis modes ---- */
 
-/* What the reduced model observes: the probes (4 each: horizontal, vertical, along, twist) and the
- * support elements' inner nodes (3 each), for the traces and the support tensions. (The loads'
- * kinematics from the expansion, gal_rdyn_quadrature_obs, changed the galloping amplitudes of
- * data/scenes/iced_gallop.ini by 0.2% at three times the cost: the loads use the linear modes at
- * their points.) */
-static void observations(const gal_model *m, gal_data *d)
-{
-    const gal_rod *rod = d->eq.rod;
-    gal_obs *obs = d->obs;
-    int no = 0;
-    d->obs_probe = no;
-    for (int k = 0; k < m->nprobe; k++) {
-        gal_probe a = gal_probe_locate(rod, m->probe[k]);
-        /* horizontal (y), vertical (z), along (x), twist */
-        obs[no + 0] = (gal_obs){{3 * a.e + 1, 3 * (a.e + 1) + 1}, {1 - a.xi, a.xi}};
-        obs[no + 1] = (gal_obs){{3 * a.e + 2, 3 * (a.e + 1) + 2}, {1 - a.xi, a.xi}};
-        obs[no + 2] = (gal_obs){{3 * a.e, 3 * (a.e + 1)}, {1 - a.xi, a.xi}};
-        obs[no + 3] = rod->p.torsion ? (gal_obs){{3 * rod->nn + a.e0, 3 * rod->nn + a.e1}, {1 - a.w1, a.w1}}
-                                     : (gal_obs){{-1, -1}, {0, 0}};
-        no += 4;
-    }
-    d->obs_support = no;
-    for (int c = 0; c < 3; c++) obs[no++] = (gal_obs){{3 + c, -1}, {1, 0}};
-    for (int c = 0; c < 3; c++) obs[no++] = (gal_obs){{3 * (rod->nn - 2) + c, -1}, {1, 0}};
-    d->nobs = no;
-}
+static const char *const family_keys[GAL_FAMILY_COUNT] = {"modes_vertical", "modes_horizontal", "modes_torsional",
+                                                          "modes_vertical"};
 
+/* The selected modes, in their order, into d->sel; a mode at or near 0 Hz (a rigid or free-twist
+ * motion, which no reduced model can carry) is refused, named with the key that selects it. */
 static int stage_reduced(const gal_model *m, gal_data *d)
 {
-    d->rm = gal_reduced_free(d->rm);
     d->basis = 0;
-    for (int k = 0; k < d->md.n && d->basis < GAL_BASIS_MAX; k++)
-        if (d->md.mode[k].selected) d->sel[d->basis++] = k;
-    observations(m, d);
-    gal_reduced_opts ro = m->reduced;
-    if (!(ro.amplitude_m > 0)) ro.amplitude_m = fmax(1.0, d->eq.sag);
-    d->rm = gal_reduced_build(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, d->obs, d->nobs, &ro);
-    if (!d->rm) return gal_error(GAL_EFAIL, "%s: reduced model: %s", m->sc.path, gal_error_message());
+    for (int k = 0; k < d->md.n && d->basis < GAL_BASIS_MAX; k++) {
+        const gal_mode *mo = &d->md.mode[k];
+        if (!mo->selected) continue;
+        if (!(mo->frequency_hz >= GAL_MODE_FLOOR_HZ))
+            return gal_error(GAL_EINPUT, "%s: selected mode %d (%s) is at %.3g Hz, at or near 0 Hz (a rigid or "
+                             "free-twist motion): the reduced model does not take it; select fewer modes of that "
+                             "family (model.%s) or clamp the twist (span.end_twist = clamped)", m->sc.path, k + 1,
+                             gal_family_names[mo->family], mo->frequency_hz, family_keys[mo->family]);
+        d->sel[d->basis++] = k;
+    }
+    if (!d->basis) return gal_error(GAL_EINPUT, "%s: no mode selected for the reduced model (model.modes_*)", m->sc.path);
     return GAL_OK;
 }
 

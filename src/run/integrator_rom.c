@@ -1,5 +1,6 @@
 /* integrator_rom.c: the recomputed reduced model (reduced/rom.h) as a galloping run's integrator
- * (integrator.h): the basis built from the selected modes (none at or near 0 Hz) and their modal
+ * (integrator.h), the only reduced model: the basis built from the reduced stage's modes (none at or
+ * near 0 Hz) and their modal
  * derivatives about the equilibrium, fixed generalized-alpha steps, the probes and the support
  * tensions from the reconstructed rod, and the self-check (gal_rom_residual) every second of
  * simulated time against model.residual_tolerance: past it the basis grows (rom_adapt.h: the
@@ -17,7 +18,6 @@
 #include <string.h>
 
 #define CHECK_INTERVAL 1.0 /* s of simulated time between self-checks */
-#define MODE_FLOOR_HZ 0.01 /* a selected mode below this is a rigid or free-twist motion */
 
 static const char *const family_keys[GAL_FAMILY_COUNT] = {"modes_vertical", "modes_horizontal", "modes_torsional",
                                                           "modes_vertical"};
@@ -34,11 +34,6 @@ typedef struct {
     gal_rom_check worst;
 } rom_state;
 
-const gal_integrator_type *gal_integrator_reduced_of(const gal_model *m)
-{
-    return m->sc.model.reduced_recomputed ? &gal_integrator_rom : &gal_integrator_reduced;
-}
-
 static void rom_free(void *state)
 {
     rom_state *s = state;
@@ -49,30 +44,11 @@ static void rom_free(void *state)
     free(s);
 }
 
-/* The selected modes into sel; a mode at or near 0 Hz is refused, named. */
-static int select_modes(const gal_model *m, const gal_data *d, int *sel, int *r)
-{
-    *r = 0;
-    for (int k = 0; k < d->md.n && *r < GAL_BASIS_MAX; k++) {
-        const gal_mode *mo = &d->md.mode[k];
-        if (!mo->selected) continue;
-        if (!(mo->frequency_hz >= MODE_FLOOR_HZ))
-            return gal_error(GAL_EINPUT, "%s: selected mode %d (%s) is at %.3g Hz, at or near 0 Hz (a rigid or "
-                             "free-twist motion): the recomputed reduced model does not take it; select fewer modes "
-                             "of that family (model.%s) or clamp the twist (span.end_twist)",
-                             m->sc.path, k + 1, gal_family_names[mo->family], mo->frequency_hz, family_keys[mo->family]);
-        sel[(*r)++] = k;
-    }
-    if (!*r) return gal_error(GAL_EINPUT, "%s: no mode selected for the reduced model (model.modes_*)", m->sc.path);
-    return GAL_OK;
-}
-
 static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *o, double dt_out, double fhi,
                      void **state)
 {
     *state = NULL;
-    int sel[GAL_BASIS_MAX], r, st;
-    if ((st = select_modes(m, d, sel, &r))) return st;
+    int st;
     rom_state *s = calloc(1, sizeof *s);
     if (!s) return gal_error(GAL_ENOMEM, "simulate: out of memory");
     double h = o->time_step;
@@ -89,7 +65,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     s->tol = m->sc.model.residual_tolerance;
     s->warn = m->sc.model.on_invalid_warn;
     s->valid = 1;
-    if ((st = gal_rom_adapt_init(&s->adapt, &s->rom, d->eq.rod, d->eq.q, &d->md, sel, r, &ro, &F)) ||
+    if ((st = gal_rom_adapt_init(&s->adapt, &s->rom, d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F)) ||
         !(s->du = malloc((size_t)d->eq.rod->ndof * sizeof(double)))) {
         if (!st) st = gal_error(GAL_ENOMEM, "simulate: out of memory");
         rom_free(s);
@@ -134,9 +110,9 @@ static int self_check(rom_state *s)
                      s->tol, why, family_keys[f]);
 }
 
+/* The state at t_out, checked every CHECK_INTERVAL and at the end of the run (t_end). */
 static int rom_advance(void *state, double t_out, double t_end)
 {
-    (void)t_end;
     rom_state *s = state;
     int st = gal_rom_advance(s->rom, t_out);
     if (st) {
@@ -144,9 +120,9 @@ static int rom_advance(void *state, double t_out, double t_end)
         snprintf(why, sizeof why, "%s", gal_error_message());
         return gal_error(st, "reduced model (basis %d): %s", s->rom->r, why);
     }
-    if (!st && s->rom->t >= s->next_check - 1e-9) {
+    if (s->rom->t >= s->next_check - 1e-9 || t_out >= t_end) {
         st = self_check(s);
-        s->next_check += CHECK_INTERVAL;
+        while (s->next_check <= s->rom->t + 1e-9) s->next_check += CHECK_INTERVAL;
     }
     return st;
 }
@@ -178,7 +154,7 @@ static void rom_state_of(const void *state, double *q, double *v)
     gal_rom_reconstruct(s->rom, q, v);
 }
 
-const gal_integrator_type gal_integrator_rom = {
-    "reduced", GAL_MODEL_REDUCED, GAL_STAGE_START, rom_alloc, rom_advance, rom_observe, rom_counters, rom_free,
+const gal_integrator_type gal_integrator_reduced = {
+    "reduced", GAL_MODEL_REDUCED, GAL_STAGE_REDUCED, rom_alloc, rom_advance, rom_observe, rom_counters, rom_free,
     rom_state_of,
 };

@@ -120,10 +120,13 @@ int gal_run_to_state(const gal_model *m, gal_data *d, const gal_integrator_type 
     res->time_step_s = c.time_step_s;
     res->steps = c.steps, res->newton_iterations = c.newton_iterations, res->factorizations = c.factorizations;
     res->force_evaluations = c.force_evaluations, res->rejected_steps = c.rejected_steps;
-    res->basis = c.basis, res->load_cases = c.load_cases, res->build_time_s = c.build_time_s;
+    res->basis = c.basis, res->build_time_s = c.build_time_s;
     res->checked = c.checked, res->residual_max = c.residual_max, res->valid = c.valid;
     res->basis_start = c.basis_start, res->growths = c.growths;
     memcpy(res->growth, c.growth, sizeof c.growth);
+    if (!st && T->kind == GAL_MODEL_REDUCED && !res->checked) /* never a reduced result it has not checked */
+        st = gal_error(GAL_EFAIL, "%s: the reduced run's self-check did not run: its result is not checked",
+                       m->sc.path);
     return st;
 }
 
@@ -159,6 +162,6 @@ int gal_sim_run(gal_sim_setup *s, gal_model_kind kind, gal_sim_result *res)
         memset(res, 0, sizeof *res);
         return st;
     }
-    return gal_run(s->model, s->data, kind == GAL_MODEL_FULL ? &gal_integrator_full : gal_integrator_reduced_of(s->model),
+    return gal_run(s->model, s->data, kind == GAL_MODEL_FULL ? &gal_integrator_full : &gal_integrator_reduced,
                    &o, res);
 }

@@ -114,7 +114,7 @@ static int run_case(const gal_scene *sc, gal_model_kind kind, const double *q0, 
     if (m && !d) st = GAL_ENOMEM;
     if (!st) st = gal_forward(m, d, GAL_STAGE_START);
     const gal_integrator_type *T = NULL;
-    if (!st) T = kind == GAL_MODEL_FULL ? &gal_integrator_full : gal_integrator_reduced_of(m);
+    if (!st) T = kind == GAL_MODEL_FULL ? &gal_integrator_full : &gal_integrator_reduced;
     if (!st && q0 && nq0 != d->eq.rod->nq)
         st = gal_error(GAL_EINPUT, "%s: --continuation: this case has %d unknowns, the one it continues %d: the "
                        "varied keys must keep the mesh ([model] elements, effects)", sc->path, d->eq.rod->nq, nq0);

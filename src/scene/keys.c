@@ -12,7 +12,7 @@ const char *const gal_effect_names[GAL_FX_COUNT] = {
 
 const char *const scn_twist_names[] = {"clamped", "free", NULL};
 const char *const scn_start_names[] = {"rest", "mean_wind", NULL};
-const char *const scn_reduced_names[] = {"identified", "recomputed", NULL};
+const char *const scn_reduced_names[] = {"recomputed", NULL};
 const char *const scn_on_invalid_names[] = {"stop", "warn", NULL};
 const char *const scn_turb_names[] = {"none", "kaimal", "davenport", "von_karman", "en1991",
                                       NULL};
@@ -99,17 +99,13 @@ const keydef scn_keys[K_COUNT] = {
     INT("model", "modes_vertical", model.modes_vertical, 0, 200),
     INT("model", "modes_horizontal", model.modes_horizontal, 0, 200),
     INT("model", "modes_torsional", model.modes_torsional, 0, 200),
-    NUM("model", "identification_amplitude", model.identification_amplitude, 0, 0, 100, 0,
-        "m, largest translation of the reduced model's identification; 0 = max(1 m, sag)"),
-    {"model", "identification_twist", T_NUM, OFF(model.identification_twist), 0, 90, 1, 0, DEG,
-     "deg, largest twist of the reduced model's identification", NULL},
     {"model", "reduced", T_ENUM, 0, 0, 0, 0, 0, 1.0,
-     "identified | recomputed (identified: the fitted polynomial; recomputed: modes and modal derivatives, "
-     "the rod's own forces at the reconstructed state, self-checked)", scn_reduced_names},
+     "recomputed (the only reduced model: modes and modal derivatives, the rod's own forces at the "
+     "reconstructed state, self-checked)", scn_reduced_names},
     NUM("model", "residual_tolerance", model.residual_tolerance, 0, 1, 10, 0,
-        "-, recomputed reduced model: largest relative residual of its self-check (0.1: amplitudes within ~5%)"),
+        "-, reduced model: largest relative residual of its self-check (0.1: amplitudes within ~5%)"),
     {"model", "on_invalid", T_ENUM, 0, 0, 0, 0, 0, 1.0,
-     "stop | warn (what a recomputed reduced run does when its residual passes residual_tolerance)",
+     "stop | warn (what a reduced run does when its residual passes residual_tolerance)",
      scn_on_invalid_names},
     NUM("simulation", "duration", simulation.duration, 0, 1, 1e6, 0, "s"),
     NUM("simulation", "time_step", simulation.time_step, 0, 0, 1000, 0, "s, 0 = chosen by gallop"),
@@ -146,6 +142,21 @@ const keydef scn_keys[K_COUNT] = {
      "torsional stiffness; explicit: one rod per sub-conductor, joined by the spacers)",
      scn_bundle_model_names},
 };
+
+/* Keys that no longer apply, refused (exit 2, FILE:LINE) naming what replaced them. */
+static const struct {
+    const char *sec, *key, *why;
+} retired[] = {
+    {"model", "identification_amplitude", "the identified reduced model whose fit it ranged was removed (issue 13)"},
+    {"model", "identification_twist", "the identified reduced model whose fit it ranged was removed (issue 13)"},
+};
+
+const char *scn_retired_key(const char *sec, const char *key)
+{
+    for (size_t i = 0; i < sizeof retired / sizeof retired[0]; i++)
+        if (!strcmp(sec, retired[i].sec) && !strcmp(key, retired[i].key)) return retired[i].why;
+    return NULL;
+}
 
 const char *scn_key_name(int k)
 {

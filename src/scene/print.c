@@ -150,9 +150,7 @@ static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
     fprintf(fp, "modes_vertical = %d ; count\n", sc->model.modes_vertical);
     fprintf(fp, "modes_horizontal = %d ; count\n", sc->model.modes_horizontal);
     fprintf(fp, "modes_torsional = %d ; count\n", sc->model.modes_torsional);
-    put_key(fp, sc, K_IDAMP);
-    put_key(fp, sc, K_IDTW);
-    fprintf(fp, "reduced = %s ; identified | recomputed\n", scn_reduced_names[sc->model.reduced_recomputed ? 1 : 0]);
+    fprintf(fp, "reduced = %s ; %s\n", scn_reduced_names[0], scn_keys[K_REDUCED].unit);
     put_key(fp, sc, K_RESTOL);
     fprintf(fp, "on_invalid = %s ; stop | warn\n", scn_on_invalid_names[sc->model.on_invalid_warn ? 1 : 0]);
 

@@ -48,6 +48,10 @@ static int handler(void *user, const char *section, const char *name, const char
         return scn_fail(ps, GAL_EINPUT, ps->line, "[%s]: unknown section; allowed: %s", ss,
                     scn_section_list());
     int k = scn_find_key(section, name);
+    const char *why = k < 0 ? scn_retired_key(section, name) : NULL;
+    if (why)
+        return scn_fail(ps, GAL_EINPUT, ps->line, "[%s] %s = %s: no longer a key: %s; %s", ss, sn, sv, why,
+                        SCN_RETIRED_REPLACEMENT);
     if (k < 0)
         return scn_fail(ps, GAL_EINPUT, ps->line, "[%s] %s = %s: unknown key; allowed: %s", ss, sn,
                     sv, scn_key_list(section, list, sizeof list));
@@ -180,9 +184,6 @@ static void defaults(gal_scene *sc)
     sc->stability.speed_min = 0.5; /* analysis/onset.h's GAL_ONSET_SPEED_MIN, _MAX, _STEP */
     sc->stability.speed_max = 20;
     sc->stability.speed_step = 0.25;
-    sc->model.identification_amplitude = 0;
-    sc->model.identification_twist = 30 * DEG;
-    sc->model.reduced_recomputed = 0;
     sc->model.residual_tolerance = 0.1;
     sc->model.on_invalid_warn = 0;
     sc->simulation.nprobes = 1;
@@ -225,6 +226,10 @@ static int apply_override(pstate *ps, const char *o)
         return scn_fail(ps, GAL_EINPUT, -1, "[%s] %s = %s: unknown section; allowed: %s", ss, sk,
                     scn_show(val, sv, sizeof sv), scn_section_list());
     int k = scn_find_key(sec, key);
+    const char *why = k < 0 ? scn_retired_key(sec, key) : NULL;
+    if (why)
+        return scn_fail(ps, GAL_EINPUT, -1, "[%s] %s = %s: no longer a key: %s; %s", ss, sk,
+                        scn_show(val, sv, sizeof sv), why, SCN_RETIRED_REPLACEMENT);
     if (k < 0)
         return scn_fail(ps, GAL_EINPUT, -1, "[%s] %s = %s: unknown key; allowed: %s", ss, sk,
                     scn_show(val, sv, sizeof sv), scn_key_list(sec, list, sizeof list));

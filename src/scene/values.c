@@ -159,12 +159,16 @@ static int apply_enum(kv *a)
     gal_scene *sc = a->ps->sc;
     int i = 0;
     while (kd->names[i] && strcasecmp(a->v, kd->names[i])) i++;
+    if (!kd->names[i] && a->k == K_REDUCED && !strcasecmp(a->v, "identified"))
+        return bad(a, GAL_EINPUT, "the identified reduced model (a polynomial fitted once over a fixed range) was "
+                   "removed (issue 13); allowed: recomputed, the reduced model, whose self-check "
+                   "model.residual_tolerance and model.on_invalid control (or leave the key out)");
     if (!kd->names[i]) return bad(a, GAL_EINPUT, "unknown value; allowed: %s", kd->unit);
     if (a->k == K_TWIST) sc->span.end_twist = i ? GAL_TWIST_FREE : GAL_TWIST_CLAMPED;
     else if (a->k == K_START) sc->simulation.start_mean_wind = i;
     else if (a->k == K_TERRAIN) sc->wind.terrain = (gal_terrain)i;
     else if (a->k == K_VTURB) sc->wind.vertical_turbulence = i;
-    else if (a->k == K_REDUCED) sc->model.reduced_recomputed = i;
+    else if (a->k == K_REDUCED) (void)i; /* one value: recomputed */
     else if (a->k == K_ONINV) sc->model.on_invalid_warn = i;
     else if (a->k == K_BMODEL) sc->bundle.explicit_model = i;
     else

@@ -43,7 +43,7 @@ typedef struct gal_acc_row {
     char value[48];       /* its value as written on the command line (no spaces) */
     double error;         /* relative, against the study's reference (0 for the reference) */
     double wall_time_s;   /* elements: statics + modes (median); dynamic: integration */
-    double build_time_s;  /* elements: statics part; reduced: identification; full: 0 */
+    double build_time_s;  /* elements: statics part; reduced: its own set-up (basis); full: 0 */
     int reference;        /* the study's reference row */
     int chosen;           /* the cheapest non-reference row with error <= tolerance */
     /* the parts of the error (NaN when they do not apply) */

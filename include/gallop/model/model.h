@@ -2,9 +2,9 @@
  * changed by any stage: the rods (mesh, material and the effects they carry: bending off is EI = 0,
  * torsion off is no twist unknowns, gravity off is g = 0) with their equilibrium specification, the
  * couplings between rods, the modes the scene selects, the structural damping, the loads'
- * configuration and aerodynamic table, the turbulent wind field's parameters, the start of a run and
- * the reduced model's identification settings. Every stage reads it through a const pointer and
- * writes what it finds into a gal_data (run/forward.h). */
+ * configuration and aerodynamic table, the turbulent wind field's parameters, and the start of a run
+ * (the reduced model's controls, model.residual_tolerance and on_invalid, are read from sc). Every
+ * stage reads it through a const pointer and writes what it finds into a gal_data (run/forward.h). */
 #ifndef GALLOP_MODEL_H
 #define GALLOP_MODEL_H
 
@@ -12,7 +12,6 @@
 #include "gallop/loads/loads.h"
 #include "gallop/loads/wind.h"
 #include "gallop/modes/modes.h"
-#include "gallop/reduced/reduced.h"
 #include "gallop/rod/rod.h"
 #include "gallop/scene/scene.h"
 #include "gallop/statics/statics.h"
@@ -67,7 +66,6 @@ typedef struct gal_model {
     gal_wind_params wind;
     int start_mean_wind;     /* runs start on the equilibrium under the mean wind (the wind then
                               * blows at full speed from t = 0), else on the sagged equilibrium */
-    gal_reduced_opts reduced;/* identification amplitudes; amplitude_m 0: max(1 m, sag) */
     int nprobe;
     double probe[GAL_MAX_PROBES]; /* fractions of the span where runs record their traces */
 } gal_model;

@@ -7,7 +7,8 @@
  *                to GAL_DAMPING_BAND_HZ, independent of the modes selected)
  *   wind         the loads on the equilibrium rod, with the turbulent wind field when there is one
  *   start        the start of a run: the equilibrium, or the equilibrium under the mean wind
- *   reduced      the reduced model on the selected modes, observing the probes (reduced.h)
+ *   reduced      the reduced model's basis modes: the selected ones, none at or near 0 Hz (the
+ *                reduced integrator, run/integrator.h, builds its basis on them: reduced/rom.h)
  * Every command calls it: `gallop modes` to the modes, `stability` to the modes, `accuracy` and the
  * runs (`simulate`, `compare`, run/sim.h) as far as their integrator needs. */
 #ifndef GALLOP_FORWARD_H
@@ -17,7 +18,6 @@
 #include "gallop/model/damping.h"
 #include "gallop/model/model.h"
 #include "gallop/modes/modes.h"
-#include "gallop/reduced/reduced.h"
 #include "gallop/statics/statics.h"
 
 #ifdef __cplusplus
@@ -36,8 +36,9 @@ typedef enum {
 
 extern const char *const gal_stage_names[GAL_STAGE_COUNT];
 
-#define GAL_BASIS_MAX 64 /* selected modes taken into the reduced basis (gal_reduced_build allows 40) */
-#define GAL_OBS_MAX (4 * GAL_MAX_PROBES + 6) /* the reduced model's observations: 4 per probe, 6 support */
+#define GAL_BASIS_MAX 64 /* selected modes taken into the reduced basis */
+#define GAL_MODE_FLOOR_HZ 0.01 /* Hz: a selected mode below this is a rigid or free-twist motion, refused
+                                * by the reduced stage */
 
 /* Everything the stages find or change (the model holds what they read). */
 typedef struct gal_data {
@@ -58,14 +59,8 @@ typedef struct gal_data {
     double *v_start;         /* nq: the start velocity (gal_data_start_from), or NULL: at rest */
     int mean_wind_iterations;/* Newton iterations of the equilibrium under the mean wind */
     /* reduced */
-    gal_reduced *rm;         /* owned, or NULL */
     int basis;               /* modes in the basis */
     int sel[GAL_BASIS_MAX];  /* their indices in md */
-    int nobs;
-    gal_obs obs[GAL_OBS_MAX];/* the probes (4 each from obs_probe: horizontal, vertical, along,
-                              * twist) and the inner nodes of the support elements (3 each from
-                              * obs_support) */
-    int obs_probe, obs_support;
     double stage_time_s[GAL_STAGE_COUNT]; /* wall time of each stage */
 } gal_data;
 

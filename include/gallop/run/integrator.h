@@ -3,11 +3,10 @@
  * state to each output time, observe the probes and the support tensions there, and count what
  * they did; run/sim.h drives either with one loop.
  *   gal_integrator_full     generalized-alpha on the whole rod (full/dynamics.h), fixed steps
- *   gal_integrator_reduced  the reduced model (reduced/rdyn.h), adaptive steps and Hermite
- *                           interpolation between them
- *   gal_integrator_rom      the recomputed reduced model (reduced/rom.h, model.reduced =
- *                           recomputed): generalized-alpha on modes and modal derivatives, the
- *                           rod's own forces, its residual checked every second */
+ *   gal_integrator_reduced  the reduced model (reduced/rom.h; src/run/integrator_rom.c):
+ *                           generalized-alpha on modes and modal derivatives, the rod's own forces
+ *                           at the reconstructed state, its residual checked every second and at
+ *                           the end of the run */
 #ifndef GALLOP_INTEGRATOR_H
 #define GALLOP_INTEGRATOR_H
 
@@ -26,17 +25,16 @@ typedef struct gal_run_opts {
     double time_step;        /* s, full model; 0: chosen from the highest selected mode */
     double output_interval;  /* s; 0: chosen */
     double rho_inf;          /* -, full model's numerical dissipation (1 = none) */
-    double tolerance;        /* -, reduced model's relative error per step */
+    double tolerance;        /* -, simulation.tolerance (no integrator reads it since issue 13) */
 } gal_run_opts;
 
 /* What an integrator counts. */
 typedef struct gal_run_counters {
-    double time_step_s;      /* full: the step; reduced: mean adaptive step */
+    double time_step_s;      /* s: the step */
     long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
-    int basis;               /* reduced: modes in the basis */
-    int load_cases;          /* reduced: identification load cases */
-    double build_time_s;     /* reduced: identification, or the recomputed model's own set-up */
-    int checked;             /* recomputed reduced model: its self-check ran (then the two below) */
+    int basis;               /* reduced: basis size (modes and modal derivatives) */
+    double build_time_s;     /* reduced: the model's own set-up (basis, after statics and modes) */
+    int checked;             /* reduced: its self-check ran (then the two below) */
     double residual_max;     /* the largest relative residual it found */
     int valid;               /* 1: residual_max within model.residual_tolerance */
     int basis_start, growths;/* recomputed reduced model: its initial basis and how often it grew */
@@ -65,10 +63,6 @@ typedef struct gal_integrator_type {
 
 extern const gal_integrator_type gal_integrator_full;
 extern const gal_integrator_type gal_integrator_reduced;
-extern const gal_integrator_type gal_integrator_rom;
-
-/* The reduced integrator the model's scene asks for (model.reduced). */
-const gal_integrator_type *gal_integrator_reduced_of(const gal_model *m);
 
 #ifdef __cplusplus
 }

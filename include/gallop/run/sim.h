@@ -1,8 +1,9 @@
 /* sim.h: a galloping run of a model (issues 5 and 6): the pipeline forwarded as far as the
  * integrator needs (run/forward.h), then one loop over the output times whatever the integrator
- * (run/integrator.h): the full model (generalized-alpha on the whole rod) or the reduced model (the
- * modes with the condensed restoring force), on the same equilibrium, loads and wind; traces at
- * the probes. */
+ * (run/integrator.h): the full model (generalized-alpha on the whole rod) or the reduced model (modes
+ * and modal derivatives, the rod's own forces at the reconstructed state, self-checked: a reduced
+ * run whose check did not run fails), on the same equilibrium, loads and wind; traces at the
+ * probes. */
 #ifndef GALLOP_SIM_H
 #define GALLOP_SIM_H
 
@@ -23,12 +24,11 @@ typedef struct gal_sim_result {
     double *trace;                 /* nsamples x 4 nprobe: horizontal, vertical, along (m), twist (deg) */
     double *tension;               /* nsamples x 2: left and right support tensions (N) */
     double wall_time_s;            /* integration */
-    double build_time_s;           /* model set-up (reduced: identification) */
-    double time_step_s;            /* full: the step; reduced: mean adaptive step */
+    double build_time_s;           /* reduced: the model's own set-up (its basis) */
+    double time_step_s;            /* s: the step */
     long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
-    int basis;                     /* reduced: modes in the basis */
-    int load_cases;                /* reduced: identification load cases */
-    int checked;                   /* recomputed reduced model: self-checked (residual_max, valid) */
+    int basis;                     /* reduced: basis size (modes and modal derivatives) */
+    int checked;                   /* reduced: self-checked (residual_max, valid) */
     double residual_max;
     int valid;
     int basis_start, growths;      /* recomputed reduced model: the initial basis, its growths */

@@ -142,9 +142,7 @@ typedef struct gal_scene {
     struct {
         int elements;             /* count, >= 4 */
         int modes_vertical, modes_horizontal, modes_torsional; /* count per family, >= 0 */
-        double identification_amplitude; /* m; 0 = max(1 m, sag) */
-        double identification_twist;     /* rad (scene: deg) */
-        int reduced_recomputed;   /* 1: the recomputed reduced model (reduced/rom.h); 0: identified */
+        /* the reduced model (reduced/rom.h, the only one: model.reduced = recomputed) */
         double residual_tolerance;/* -, its self-check's largest relative residual */
         int on_invalid_warn;      /* 1: a run past the tolerance finishes with valid: false */
     } model;
