@@ -100,8 +100,8 @@ int gal_run_to_state(const gal_model *m, gal_data *d, const gal_integrator_type 
     memset(res, 0, sizeof *res);
     res->kind = T->kind;
     if ((q_end || v_end) && !T->state)
-        return gal_error(GAL_EINPUT, "%s: the %s integrator (model.reduced = identified) cannot give its final "
-                         "state; allowed: the full model or model.reduced = recomputed", m->sc.path, T->name);
+        return gal_error(GAL_EINPUT, "%s: the %s integrator cannot give its final state", m->sc.path,
+                         T->name);
     double dt_out = 0, fhi = 0;
     int st = gal_forward(m, d, GAL_STAGE_MODES);
     if (!st) st = sampling(m, d, o, &dt_out, &fhi);
