@@ -1,7 +1,7 @@
 /* test_sweep.c: the sweep's library parts (run/sweep.h, output/sweepreport.h): LIST parsing (lists,
  * ranges, the refused forms), the cases of a unit (a chain up and down, the rows), the overrides of
  * a case, the fingerprint (what changes it), a case record written and read back exactly, and the
- * continuation hook: a full run continued from its final state (gal_data_start_from,
+ * continuation hook: a full or reduced run continued from its final state (gal_data_start_from,
  * gal_run_to_state) ends where one longer run ends. */
 #include <unistd.h>
 
@@ -115,8 +115,9 @@ static void test_fingerprint_and_record(void)
     CHECK(system(cmd) == 0, "clean up");
 }
 
-/* A full run of 30 s continued for 20 s from its final state ends where a run of 50 s does. */
-static void test_continued_run(void)
+/* A run of 30 s continued for 20 s from its final state ends where a run of 50 s does: the full
+ * model, and the reduced one (its state reconstructed, the basis rebuilt about the equilibrium). */
+static void continued_run(const gal_integrator_type *T)
 {
     gal_scene sc;
     if (load(&sc, "wind.speed=12")) return;
@@ -130,29 +131,36 @@ static void test_continued_run(void)
     gal_forward(m, d1, GAL_STAGE_START);
     int nq = d1->eq.rod->nq;
     double *q = malloc((size_t)nq * sizeof *q), *v = malloc((size_t)nq * sizeof *v);
-    CHECK(gal_run_to_state(m, d1, &gal_integrator_full, &o, &r1, q, v) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_run_to_state(m, d1, T, &o, &r1, q, v) == GAL_OK, "%s", gal_error_message());
     CHECK(gal_data_start_from(m, d2, q, v) == GAL_OK && d2->v_start && d2->loads.ramp_time == 0, "start from it");
     gal_run_opts o2 = o, o3 = o;
     o2.duration = 20, o3.duration = 50;
     o2.output_interval = o3.output_interval = r1.dt_out;
-    CHECK(gal_run(m, d2, &gal_integrator_full, &o2, &r2) == GAL_OK, "%s", gal_error_message());
-    CHECK(gal_run(m, d3, &gal_integrator_full, &o3, &r3) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_run(m, d2, T, &o2, &r2) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_run(m, d3, T, &o3, &r3) == GAL_OK, "%s", gal_error_message());
     /* the vertical displacement at the first probe at the end, against the motion's size */
     double a2 = r2.trace[(r2.nsamples - 1) * 4 * r2.nprobe + 1], a3 = r3.trace[(r3.nsamples - 1) * 4 * r3.nprobe + 1];
     double size = 0;
     for (long i = 0; i < r3.nsamples; i++) size = fmax(size, fabs(r3.trace[i * 4 * r3.nprobe + 1]));
+    printf("    (%s: continued %.5g m, one run %.5g m at the end; motion %.3g m)\n", T->name, a2, a3, size);
     CHECK(size > 0.01, "the span moves: %g m", size);
     CHECK_NEAR(a2, a3, 0.01 * size);
     /* and not a start from rest: that one is still far from it */
     gal_sim_result r4;
     gal_data *d4 = gal_data_alloc(m);
-    gal_run(m, d4, &gal_integrator_full, &o2, &r4);
+    gal_run(m, d4, T, &o2, &r4);
     double a4 = r4.trace[(r4.nsamples - 1) * 4 * r4.nprobe + 1];
     CHECK(fabs(a4 - a3) > 0.05 * size, "from rest: %g against %g", a4, a3);
     gal_sim_result_clear(&r1), gal_sim_result_clear(&r2), gal_sim_result_clear(&r3), gal_sim_result_clear(&r4);
     free(q), free(v);
     gal_data_free(d1), gal_data_free(d2), gal_data_free(d3), gal_data_free(d4);
     gal_model_free(m);
+}
+
+static void test_continued_run(void)
+{
+    continued_run(&gal_integrator_full);
+    continued_run(&gal_integrator_reduced);
 }
 
 int main(void)
