@@ -7,6 +7,7 @@ passed=0; failed=0
 for t in "$@"; do
   name=$(basename "$t")
   echo "== $name"
+  t0=$SECONDS
   case "$t" in
     *.sh) out=$(bash "$t" 2>&1); rc=$? ;;
     *)    out=$("$t" 2>&1); rc=$? ;;
@@ -22,6 +23,7 @@ for t in "$@"; do
   else
     echo "  FAIL $name: no summary (exit status $rc, crashed?)"; failed=$((failed + 1))
   fi
+  echo "  [$name: $((SECONDS - t0)) s]"
   # FAIL_FAST=1 (make mutate): stop at the first failing program
   if [ -n "${FAIL_FAST:-}" ] && [ "$failed" -gt 0 ]; then break; fi
 done
