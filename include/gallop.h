@@ -43,6 +43,7 @@
 /* run: galloping runs */
 #include "gallop/run/forward.h"
 #include "gallop/run/integrator.h"
+#include "gallop/run/onset_scene.h"
 #include "gallop/run/sim.h"
 #include "gallop/run/sweep.h"
 /* analysis: spectra, stability, galloping onset, accuracy */

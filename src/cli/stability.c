@@ -54,27 +54,6 @@ static int vertical_modes(stab *S)
     return st;
 }
 
-/* The coupled onset of the scene's span, with the pipeline's damping (the one the runs apply). */
-static int coupled_onset(const gal_scene *sc, gal_onset *O)
-{
-    int st;
-    gal_model *m = gal_model_alloc(sc, &st);
-    gal_data *d = m ? gal_data_alloc(m) : NULL;
-    if (m && !d) st = GAL_ENOMEM;
-    if (!st) st = gal_forward(m, d, GAL_STAGE_WIND);
-    if (!st) {
-        gal_onset_opts o;
-        gal_onset_default_opts(&o);
-        o.speed_min = sc->stability.speed_min, o.speed_max = sc->stability.speed_max;
-        o.speed_step = sc->stability.speed_step;
-        double mass = sc->conductor.mass_per_length + (sc->ice.present ? sc->ice.mass_per_length : 0);
-        st = gal_onset_analyse(d->eq.rod, d->eq.q, &d->loads, d->damping, mass, &o, O);
-    }
-    gal_data_free(d);
-    gal_model_free(m);
-    return st;
-}
-
 /* the sweep, the files and the table */
 static int run(const gal_scene *sc, const gal_aero_table *t, const char *outdir, double t0)
 {
@@ -82,7 +61,7 @@ static int run(const gal_scene *sc, const gal_aero_table *t, const char *outdir,
     int st = vertical_modes(&S);
     if (st) return st;
     gal_onset O;
-    if ((st = coupled_onset(sc, &O))) return st;
+    if ((st = gal_scene_onset(sc, &O))) return st;
     gal_stability_params p;
     gal_stability_scene_params(sc, &p);
     p.nmodes = S.nm;

@@ -6,6 +6,7 @@
 #include "gallop/run/sweep.h"
 #include "gallop/analysis/measure.h"
 #include "gallop/analysis/onset.h"
+#include "gallop/run/onset_scene.h"
 #include "gallop/base/core.h"
 #include "gallop/output/record.h"
 #include "gallop/run/sim.h"
@@ -61,24 +62,9 @@ static void disk_put(const gal_sweep_onset_cache *cache, uint64_t key, double sp
 /* The coupled onset of the span (NaN: stable over the [stability] range), as `gallop stability`. */
 static int onset_compute(const gal_scene *sc, double *speed)
 {
-    int st;
-    gal_model *m = gal_model_alloc(sc, &st);
-    gal_data *d = m ? gal_data_alloc(m) : NULL;
-    if (m && !d) st = GAL_ENOMEM;
-    if (!st) st = gal_forward(m, d, GAL_STAGE_WIND);
-    if (!st) {
-        gal_onset_opts o;
-        gal_onset_default_opts(&o);
-        o.speed_min = sc->stability.speed_min, o.speed_max = sc->stability.speed_max;
-        o.speed_step = sc->stability.speed_step;
-        double mass = sc->conductor.mass_per_length + (sc->ice.present ? sc->ice.mass_per_length : 0);
-        gal_onset O;
-        st = gal_onset_analyse(d->eq.rod, d->eq.q, &d->loads, d->damping, mass, &o, &O);
-        if (!st) *speed = O.onset_speed;
-        if (!st) gal_onset_clear(&O);
-    }
-    gal_data_free(d);
-    gal_model_free(m);
+    gal_onset O;
+    int st = gal_scene_onset(sc, &O);
+    if (!st) *speed = O.onset_speed, gal_onset_clear(&O);
     return st;
 }
 
