@@ -28,6 +28,7 @@
 #include "gallop/modes/modes.h"
 /* bundle: the explicit bundle model (one rod per sub-conductor, rigid spacers) */
 #include "gallop/bundle/bundle.h"
+#include "gallop/bundle/bundle_dyn.h"
 /* loads: aerodynamic tables and section loads, wind */
 #include "gallop/loads/aero.h"
 #include "gallop/loads/loads.h"

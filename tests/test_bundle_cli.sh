@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # test_bundle_cli.sh: an explicit bundle ([bundle] model = explicit) through the real binary:
 # `gallop modes` writes the single rod's files with the sub-conductor named (equilibrium.csv and
-# shapes.csv column sub, modes.csv share_subspan); simulate, compare and stability refuse it with
-# exit 2, naming the file, the line and [bundle] model, and saying equivalent is what runs.
+# shapes.csv column sub, modes.csv share_subspan); `simulate --model full` runs it, trace.csv with
+# the centroid's columns and each sub-conductor's (suffix _s<k>); simulate (reduced), compare and
+# stability refuse it with exit 2, naming the file, the line and [bundle] model, and saying
+# equivalent is what runs.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
 pass=0; fail=0
@@ -36,6 +38,24 @@ done
 "$GALLOP" simulate data/scenes/quad_bundle_gallop.ini --set bundle.model=explicit -o "$tmp/s2" > "$tmp/s2.txt" 2>&1
 rc=$?
 [ $rc -eq 2 ] && grep -q -- '--set: \[bundle\] model = explicit' "$tmp/s2.txt" && ok "--set explicit refused" || bad "--set: exit $rc: $(cat "$tmp/s2.txt")"
+
+# the full model's run of the explicit bundle (short: 20 s)
+if "$GALLOP" simulate "$tmp/quad.ini" --model full --set simulation.duration=20 -o "$tmp/full" > "$tmp/full.txt" 2>&1; then
+    ok "simulate --model full runs"
+else
+    bad "simulate --model full: $(cat "$tmp/full.txt")"
+fi
+hdr=$(head -1 "$tmp/full/trace.csv" 2>/dev/null)
+for col in p0.5_vertical_m p0.5_twist_deg tension_left_n p0.5_vertical_m_s1 p0.25_twist_deg_s4 tension_left_n_s2 tension_right_n_s4; do
+    echo ",$hdr," | grep -q ",$col," && ok "trace.csv column $col" || bad "trace.csv column $col: $hdr"
+done
+rows=$(tail -n +2 "$tmp/full/trace.csv" 2>/dev/null | wc -l)
+[ "$rows" -ge 64 ] && ok "trace.csv: $rows samples" || bad "trace.csv: $rows samples"
+grep -q '"model": "explicit"' "$tmp/full/summary.json" 2>/dev/null && grep -q '"subconductors": \[' "$tmp/full/summary.json" &&
+    ok "summary.json: explicit, per sub-conductor measures" || bad "summary.json: $(head -c 400 "$tmp/full/summary.json" 2>/dev/null)"
+# the leeward sub-conductor of the quad at orientation 0 (a diamond) in a wind across the span: 1, behind 3
+grep -A3 '"leeward"' "$tmp/full/summary.json" | tr -d ' \n' | grep -q '"leeward":\[1\]' && ok "leeward 1" ||
+    bad "leeward: $(grep -A3 '"leeward"' "$tmp/full/summary.json")"
 
 echo "#summary $pass $fail"
 [ "$fail" -eq 0 ]

@@ -152,6 +152,13 @@ void gal_bundle_map(const gal_bundle *b, int r, const double *z, double *rod_fre
     }
 }
 
+void gal_bundle_map_add_t(const gal_bundle *b, int r, const double *rod_free, double *y)
+{
+    const gal_rod *rod = b->rod[r];
+    for (int d = 0; d < rod->ndof; d++)
+        for (int e = 0; e < b->tcnt[r][d]; e++) y[b->tidx[r][4 * d + e]] += b->tval[r][4 * d + e] * rod_free[d];
+}
+
 double *gal_bundle_q(const gal_bundle *b, double *s, int r)
 {
     return s + (size_t)r * b->rod[0]->nq;

@@ -19,6 +19,8 @@ int gal_cli_accuracy(int argc, char **argv);
 int gal_cli_sweep(int argc, char **argv);
 /* `gallop modes` of an explicit bundle (src/cli/bundle.c) */
 int gal_cli_modes_bundle(const struct gal_scene *sc, const char *outdir);
+/* `gallop simulate --model full` of an explicit bundle (src/cli/bundle.c) */
+int gal_cli_simulate_bundle(const struct gal_scene *sc, const char *outdir);
 
 /* ---- the commands and their options (src/cli/usage.c) ---- */
 #include <stdio.h>

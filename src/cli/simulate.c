@@ -74,6 +74,7 @@ int gal_cli_simulate(int argc, char **argv)
             return 2;
         }
     }
+    if (sc.bundle.subconductors > 1 && sc.bundle.explicit_model) return gal_cli_simulate_bundle(&sc, outdir);
     gal_model *m;
     gal_data *d;
     gal_run_opts o;

@@ -137,6 +137,9 @@ const keydef scn_keys[K_COUNT] = {
     NUM("bundle", "spacer_mass", bundle.spacer_mass, 0, 0, 1000, 0, "kg, of one spacer"),
     NUM("bundle", "spacer_inertia", bundle.spacer_inertia, 0, 0, 1000, 0,
         "kg m^2, of one spacer about the bundle axis"),
+    NUM("bundle", "wake_factor", bundle.wake_factor, 0, 0, 1, 0,
+        "-, explicit model: the dynamic pressure of a leeward sub-conductor (in another's wake, at rest) "
+        "over the free stream's (1: no shielding)"),
     {"bundle", "model", T_ENUM, 0, 0, 0, 0, 0, 1.0,
      "equivalent | explicit (equivalent: one rod with the bundle's mass, inertia and tension-given "
      "torsional stiffness; explicit: one rod per sub-conductor, joined by the spacers)",

@@ -170,6 +170,7 @@ static void defaults(gal_scene *sc)
     sc->wind.terrain = GAL_TERRAIN_NONE;
     sc->ice.density = 900; /* glaze */
     sc->bundle.subconductors = 1;
+    sc->bundle.wake_factor = 1;
     sc->model.elements = 100;
     sc->model.modes_vertical = 3;
     sc->model.modes_horizontal = 2;

@@ -90,6 +90,8 @@ void gal_bundle_step(const gal_bundle *b, const double *s, const double *dz, dou
 double *gal_bundle_q(const gal_bundle *b, double *s, int r);
 /* The rod r's free-dof vector of a system vector z (the linear map T). */
 void gal_bundle_map(const gal_bundle *b, int r, const double *z, double *rod_free);
+/* y += T_r^T rod_free: rod r's free-dof vector (forces) onto the system's dofs. */
+void gal_bundle_map_add_t(const gal_bundle *b, int r, const double *rod_free, double *y);
 
 /* The equilibrium under gravity: each sub-conductor with the span's specification (horizontal
  * tension, sag or unstretched length of one sub-conductor) and the spacers' weight, by Newton on

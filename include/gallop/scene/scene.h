@@ -133,6 +133,7 @@ typedef struct gal_scene {
         double orientation;       /* rad (scene: deg), of the first sub-conductor from horizontal */
         double spacer_mass;       /* kg, of one spacer */
         double spacer_inertia;    /* kg m^2, of one spacer about the bundle axis */
+        double wake_factor;       /* -, explicit model: leeward sub-conductors' dynamic pressure factor */
         int explicit_model;       /* 1: one rod per sub-conductor; 0: one equivalent rod */
         int model_line;           /* the scene line of [bundle] model (-1: --set, 0: not given) */
     } bundle;

@@ -1,0 +1,121 @@
+/* bundle_dyn.h: the explicit bundle's nonlinear dynamics (README "Bundles", issue 19): the
+ * assembled system of bundle.h (the sub-conductors' rods joined by rigid spacers, eliminated
+ * exactly) integrated by the same generalized-alpha scheme with modified Newton as the single rod's
+ * full model (full/dynamics.h), in the system's dofs z:
+ *   M(s) a + C v + T^T grad U(s) = T^T F(t, s, v),
+ * M(s) = T^T M_r T plus the spacers' mass and inertia (at the current spacer rotations), C Rayleigh
+ * damping alpha M0 + beta K0 of the assembled system at its equilibrium, F the loads on every rod.
+ * A step's increment dz is applied from the step's start (gal_bundle_step: rods' dofs added, the
+ * spacers rotated by exp(dz_phi x)); the rotation dofs' velocities are angular velocities. The
+ * gyroscopic terms of the spacers and the centripetal term d(T)/dt v of the spacer nodes are left
+ * out of the inertia: both are of order (omega r)^2 with r the bundle radius (0.2 m) and a bundle
+ * rotating at a few rad/s, and the energy test (tests/test_bundle_dyn.c) bounds what they cost.
+ *
+ * The loads (gal_bundle_loads): the quasi-steady table of the scene on every sub-conductor at its
+ * own relative wind and twist (gal_loads_full on its rod), with bundle.wake_factor multiplying the
+ * dynamic pressure of the leeward sub-conductors: those in the wake of another (downwind of it and
+ * within one diameter of its line along the wind, at rest). */
+#ifndef GALLOP_BUNDLE_DYN_H
+#define GALLOP_BUNDLE_DYN_H
+
+#include "gallop/bundle/bundle.h"
+#include "gallop/loads/loads.h"
+#include "gallop/run/sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* External generalized forces on the system: add T^T F(t, s, v) to f (ndof), with the map's values
+ * at s (gal_bundle_eval at s was the last evaluation). */
+typedef struct gal_bundle_force {
+    int (*eval)(void *ctx, gal_bundle *b, double t, const double *s, const double *v, double *f);
+    void *ctx;
+} gal_bundle_force;
+
+typedef struct gal_bundle_dyn_opts {
+    double h;            /* s, time step */
+    double rho_inf;      /* [0, 1]; 1: no numerical dissipation */
+    double alpha, beta;  /* Rayleigh damping C = alpha M0 + beta K0 (1/s, s); 0, 0: none */
+    double newton_tol;   /* relative residual; default 1e-8 */
+    int max_newton;      /* per step; default 20 */
+    int max_halvings;    /* default 6 */
+} gal_bundle_dyn_opts;
+
+typedef struct gal_bundle_dyn {
+    gal_bundle *b;               /* not owned; its state is the equilibrium, its scratch is used */
+    gal_bundle_dyn_opts o;
+    double am, af, beta, gamma;
+    double t;
+    double *s, *s1;              /* nstate: the state, the iterate */
+    double *v, *a, *v1, *a1, *dz; /* ndof: velocity, acceleration, the step's increment */
+    gal_csc *S, *K0, *M0;        /* iteration matrix; the tangent and mass at the start (damping) */
+    void *chol;
+    double factor_h;
+    gal_bundle_force force;
+    double *g0, *g1, *f0, *f1, *r, *dx, *tmp, *Cv, *wrk;
+    long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
+    double energy0;
+} gal_bundle_dyn;
+
+void gal_bundle_dyn_default_opts(gal_bundle_dyn_opts *o);
+/* Start at the state s0 (nstate; b->state when NULL) with velocity v0 (ndof, NULL: at rest); the
+ * damping's K0 and M0 are taken at b->state. NULL with a message on failure. */
+gal_bundle_dyn *gal_bundle_dyn_alloc(gal_bundle *b, const double *s0, const double *v0,
+                                     const gal_bundle_dyn_opts *o, const gal_bundle_force *force);
+gal_bundle_dyn *gal_bundle_dyn_free(gal_bundle_dyn *d);
+/* One step of o.h (halved internally when Newton fails). */
+int gal_bundle_dyn_step(gal_bundle_dyn *d);
+/* Kinetic + elastic + gravity energy (J) at the current state. */
+double gal_bundle_dyn_energy(gal_bundle_dyn *d);
+/* y = M(s) x over the system's dofs, with the map's values at s already set (gal_bundle_eval);
+ * wrk: 2 nq doubles of scratch. */
+void gal_bundle_mass_mult(const gal_bundle *b, const double *s, const double *x, double *y, double *wrk);
+
+/* The loads on every sub-conductor. */
+typedef struct gal_bundle_loads {
+    gal_loads L[GAL_BUNDLE_MAX]; /* per sub-conductor: the scene's, on its rod, its air density */
+    int leeward[GAL_BUNDLE_MAX]; /* 1: in another's wake (its density times the wake factor) */
+    double *vq, *fq;             /* scratch, nq each */
+} gal_bundle_loads;
+
+/* Per sub-conductor copies of base (rho: one sub-conductor's air density) with the wake factor on
+ * the leeward ones. GAL_ENOMEM or GAL_OK; gal_bundle_loads_clear frees. */
+int gal_bundle_loads_init(gal_bundle_loads *bl, const gal_bundle *b, const gal_loads *base, double rho,
+                          double wake_factor);
+void gal_bundle_loads_clear(gal_bundle_loads *bl);
+/* gal_bundle_force.eval of the loads (ctx: a gal_bundle_loads). */
+int gal_bundle_loads_eval(void *ctx, gal_bundle *b, double t, const double *s, const double *v, double *f);
+
+/* A galloping run of the explicit bundle (`gallop simulate --model full` on [bundle] model =
+ * explicit): the bundle's statics and modes (gal_bundle_solve_model), Rayleigh damping giving the
+ * scene's ratio at the lowest and highest selected bundle modes, the loads above, the same output
+ * interval and time step rules as the single rod's full model (run/sim.h). res->c holds the
+ * bundle's centroid: per probe its horizontal, vertical and along displacement (the mean of the
+ * sub-conductors') and the bundle's rotation about it (deg, in the twist column), the support
+ * tensions summed over the sub-conductors; sub holds each sub-conductor's probes (4 per probe as a
+ * single rod's) and tension the left and right support tension of each. */
+typedef struct gal_bundle_sim_result {
+    gal_sim_result c;
+    int n;                       /* sub-conductors */
+    int leeward[GAL_BUNDLE_MAX];
+    double wake_factor;
+    double alpha, beta;          /* the Rayleigh damping applied */
+    double setup_time_s;         /* statics and modes */
+    int ndof;
+    double *sub;                 /* nsamples x n x 4 nprobe */
+    double *tension;             /* nsamples x n x 2 */
+} gal_bundle_sim_result;
+
+struct gal_model;
+struct gal_run_opts;
+int gal_bundle_simulate(const struct gal_model *m, const struct gal_run_opts *o, gal_bundle_sim_result *res);
+void gal_bundle_sim_result_clear(gal_bundle_sim_result *res);
+/* DIR/trace.csv and DIR/summary.json of the run, one output set (README "Bundles"). */
+int gal_bundle_sim_write(const char *dir, const gal_scene *sc, const gal_bundle_sim_result *res);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
