@@ -11,14 +11,48 @@
 #include <string.h>
 
 #include "base/chol.h"
+#include "gallop/model/damping.h"
 
 void gal_rom_qm_free(gal_rom *m)
 {
     gal_rom_qm *qm = m->qm;
     if (!qm) return;
     free(qm->pair); free(qm->Th); free(qm->P); free(qm->mono); free(qm->M);
+    free(qm->W); free(qm->D); free(qm->Z); free(qm->Zv); free(qm->y); free(qm->wy); free(qm->f0);
     free(qm);
     m->qm = NULL;
+}
+
+/* W = B^T M B and D = B^T C B over B = [Phi, Theta] (the manifold's inertia, qm->inertia). */
+static int inertia_build(gal_rom *m)
+{
+    gal_rom_qm *qm = m->qm;
+    int n = m->ndof, r = m->nmodes, nz = r + qm->np, st = GAL_OK;
+    qm->inertia = 1, qm->nz = nz;
+    qm->W = malloc((size_t)nz * nz * sizeof(double));
+    qm->D = m->o.damping ? malloc((size_t)nz * nz * sizeof(double)) : NULL;
+    qm->Z = malloc((size_t)nz * r * sizeof(double)), qm->Zv = malloc((size_t)nz * r * sizeof(double));
+    qm->y = malloc((size_t)nz * sizeof(double)), qm->wy = malloc((size_t)nz * sizeof(double));
+    qm->f0 = malloc((size_t)5 * r * sizeof(double));
+    if (qm->f0) qm->d0 = qm->f0 + r, qm->f1 = qm->f0 + 2 * r, qm->d1 = qm->f0 + 3 * r, qm->p0 = qm->f0 + 4 * r;
+    double *B = malloc((size_t)n * nz * sizeof(double)), *t = malloc((size_t)n * sizeof(double));
+    if (!qm->W || (m->o.damping && !qm->D) || !qm->Z || !qm->Zv || !qm->y || !qm->wy || !qm->f0 || !B || !t) {
+        free(B); free(t);
+        return gal_error(GAL_ENOMEM, "reduced model: out of memory for the manifold's inertia");
+    }
+    memcpy(B, m->V, (size_t)n * r * sizeof(double));
+    memcpy(B + (size_t)n * r, qm->Th, (size_t)n * qm->np * sizeof(double));
+    for (int a = 0; a < nz; a++) {
+        gal_rod_mass_mult(m->rod, B + (size_t)a * n, t);
+        for (int b = 0; b <= a; b++) {
+            double s = 0;
+            for (int d = 0; d < n; d++) s += t[d] * B[(size_t)b * n + d];
+            qm->W[a * nz + b] = qm->W[b * nz + a] = s;
+        }
+    }
+    if (qm->D) st = gal_damping_project(m->o.damping, B, nz, qm->D);
+    free(B); free(t);
+    return st;
 }
 
 int gal_rom_qm_build(gal_rom *m)
@@ -69,6 +103,7 @@ int gal_rom_qm_build(gal_rom *m)
             }
         }
     }
+    if (!st && m->o.manifold == 1) st = inertia_build(m);
 done:
     gal_csc_free(Kp); gal_csc_free(Km);
     free(w); free(qp);
@@ -209,4 +244,181 @@ int gal_rom_qm_project_state(gal_rom *m, const double *q, const double *v, doubl
     }
     free(t);
     return st;
+}
+
+/* Z(x) (nz x r, column-major; unit: with the identity of the eta rows): P_k = phi_k + sum_j
+ * theta_kj x_j, so that P(x) = [Phi, Theta] Z(x) and Theta(v, v) = [Phi, Theta] Z(v)_0 v. */
+static void zfill(const gal_rom *m, const double *x, double *Z, int unit)
+{
+    const gal_rom_qm *qm = m->qm;
+    int r = m->nmodes, nz = qm->nz;
+    memset(Z, 0, (size_t)nz * r * sizeof(double));
+    for (int k = 0; k < r; k++) {
+        double *zk = Z + (size_t)k * nz;
+        if (unit) zk[k] = 1;
+        for (int j = 0; j < r; j++) zk[r + qm->pair[k * r + j]] += x[j];
+    }
+}
+
+/* out = Z^T A y (A nz x nz symmetric) */
+static void zt_sym(const gal_rom *m, const double *A, const double *y, double *out)
+{
+    gal_rom_qm *qm = m->qm;
+    int r = m->nmodes, nz = qm->nz;
+    for (int a = 0; a < nz; a++) {
+        double s = 0;
+        for (int b = 0; b < nz; b++) s += A[a * nz + b] * y[b];
+        qm->wy[a] = s;
+    }
+    for (int k = 0; k < r; k++) {
+        double s = 0;
+        for (int a = 0; a < nz; a++) s += qm->Z[(size_t)k * nz + a] * qm->wy[a];
+        out[k] = s;
+    }
+}
+
+/* y = Z a (+ Zv b when b) */
+static void zmul(const gal_rom *m, const double *a, const double *b)
+{
+    gal_rom_qm *qm = m->qm;
+    int r = m->nmodes, nz = qm->nz;
+    memset(qm->y, 0, (size_t)nz * sizeof(double));
+    for (int k = 0; k < r; k++)
+        for (int c = 0; c < nz; c++) qm->y[c] += qm->Z[(size_t)k * nz + c] * a[k] + (b ? qm->Zv[(size_t)k * nz + c] * b[k] : 0);
+}
+
+void gal_rom_qm_inertia(gal_rom *m, const double *x, const double *v, const double *a, double *fin, double *fd)
+{
+    gal_rom_qm *qm = m->qm;
+    zfill(m, x, qm->Z, 1);
+    if (fin) {
+        zfill(m, v, qm->Zv, 0);
+        zmul(m, a, v);
+        zt_sym(m, qm->W, qm->y, fin);
+    }
+    if (fd && qm->D) {
+        zmul(m, v, NULL);
+        zt_sym(m, qm->D, qm->y, fd);
+    } else if (fd) memset(fd, 0, (size_t)m->nmodes * sizeof(double));
+}
+
+void gal_rom_qm_iteration(gal_rom *m, const double *x, const double *v, double cm, double cc, double *J)
+{
+    gal_rom_qm *qm = m->qm;
+    int r = m->nmodes, nz = qm->nz;
+    zfill(m, x, qm->Z, 1), zfill(m, v, qm->Zv, 0);
+    for (int k = 0; k < r; k++) { /* column k: cm W Z_k + cc (D Z_k + 2 W Zv_k) */
+        const double *zk = qm->Z + (size_t)k * nz, *vk = qm->Zv + (size_t)k * nz;
+        for (int a = 0; a < nz; a++) {
+            double s = 0;
+            for (int b = 0; b < nz; b++)
+                s += qm->W[a * nz + b] * (cm * zk[b] + 2 * cc * vk[b]) + (qm->D ? cc * qm->D[a * nz + b] * zk[b] : 0);
+            qm->wy[a] = s;
+        }
+        for (int i = 0; i < r; i++) {
+            double s = 0;
+            for (int a = 0; a < nz; a++) s += qm->Z[(size_t)i * nz + a] * qm->wy[a];
+            J[i * r + k] += s;
+        }
+    }
+}
+
+double gal_rom_qm_kinetic(gal_rom *m, const double *x, const double *v)
+{
+    gal_rom_qm *qm = m->qm;
+    int nz = qm->nz;
+    zfill(m, x, qm->Z, 1);
+    zmul(m, v, NULL);
+    double T = 0;
+    for (int a = 0; a < nz; a++)
+        for (int b = 0; b < nz; b++) T += qm->y[a] * qm->W[a * nz + b] * qm->y[b];
+    return 0.5 * T;
+}
+
+int gal_rom_qm_acceleration(gal_rom *m, const double *x, const double *v, const double *f, double *a)
+{
+    gal_rom_qm *qm = m->qm;
+    int r = m->nmodes;
+    double *A = qm->M;
+    memset(a, 0, (size_t)r * sizeof(double));
+    gal_rom_qm_inertia(m, x, v, a, qm->f0, qm->d0); /* c(x, v) and the damping */
+    for (int k = 0; k < r; k++) a[k] = f[k] - qm->f0[k] - qm->d0[k];
+    memset(A, 0, (size_t)r * r * sizeof(double));
+    gal_rom_qm_iteration(m, x, v, 1, 0, A);
+    if (spd_solve(A, r, a)) return gal_error(GAL_EFAIL, "reduced model: the manifold's mass is singular");
+    return GAL_OK;
+}
+
+/* M(x) v into p (r) */
+static void momentum(gal_rom *m, const double *x, const double *v, double *p)
+{
+    zfill(m, x, m->qm->Z, 1);
+    zmul(m, v, NULL);
+    zt_sym(m, m->qm->W, m->qm->y, p);
+}
+
+void gal_rom_qm_begin(gal_rom *m)
+{
+    gal_rom_qm *qm = m->qm;
+    gal_rom_qm_inertia(m, m->x, m->v, m->a, qm->f0, qm->d0);
+    momentum(m, m->x, m->v, qm->p0);
+}
+
+/* g_j = d/dx_j of phi(x) = (Z(x) v0)^T W (Z(x) v1) / 2 at x (r entries); phi into *ph */
+static void phi_grad(gal_rom *m, const double *x, const double *v0, const double *v1, double *g, double *ph)
+{
+    gal_rom_qm *qm = m->qm;
+    int r = m->nmodes, nz = qm->nz;
+    double *y0 = qm->y, *w1 = qm->wy;
+    zfill(m, x, qm->Z, 1);
+    zmul(m, v1, NULL); /* y = Z v1 */
+    for (int a = 0; a < nz; a++) {
+        double s = 0;
+        for (int b = 0; b < nz; b++) s += qm->W[a * nz + b] * y0[b];
+        w1[a] = s;       /* W Z v1 */
+    }
+    zmul(m, v0, NULL);  /* y = Z v0 */
+    double *w0 = qm->Zv, p = 0; /* scratch: W Z v0 */
+    for (int a = 0; a < nz; a++) {
+        double s = 0;
+        for (int b = 0; b < nz; b++) s += qm->W[a * nz + b] * y0[b];
+        w0[a] = s, p += y0[a] * w1[a];
+    }
+    *ph = 0.5 * p;
+    /* d(Z v)/dx_j = sum_k v_k e_(r + pair(k, j)) */
+    for (int j = 0; j < r; j++) {
+        double s = 0;
+        for (int k = 0; k < r; k++) {
+            int c = r + qm->pair[k * r + j];
+            s += v0[k] * w1[c] + v1[k] * w0[c];
+        }
+        g[j] = 0.5 * s;
+    }
+}
+
+void gal_rom_qm_end(gal_rom *m, double h)
+{
+    gal_rom_qm *qm = m->qm;
+    int r = m->nmodes;
+    double am = m->am, af = m->af;
+    if (m->o.rho_inf != 1.0) {
+        gal_rom_qm_inertia(m, m->x1, m->v1, m->a1, qm->f1, qm->d1);
+        for (int i = 0; i < r; i++)
+            qm->f1[i] = (1 - am) * qm->f1[i] + am * qm->f0[i], qm->d1[i] = (1 - af) * qm->d1[i] + af * qm->d0[i];
+        return;
+    }
+    double g[64], xm[64] = {0}, ph0, ph1, phm, gd = 0, dd = 0; /* r <= 64 (gal_rom_qm_build) */
+    gal_rom_qm_inertia(m, m->x1, m->v1, m->a1, NULL, qm->d1);
+    for (int i = 0; i < r; i++) qm->d1[i] = 0.5 * (qm->d1[i] + qm->d0[i]), xm[i] = 0.5 * (m->x[i] + m->x1[i]);
+    phi_grad(m, m->x, m->v, m->v1, g, &ph0);
+    phi_grad(m, m->x1, m->v, m->v1, g, &ph1);
+    phi_grad(m, xm, m->v, m->v1, g, &phm);
+    for (int i = 0; i < r; i++) {
+        double dx = m->x1[i] - m->x[i];
+        gd += g[i] * dx, dd += dx * dx;
+    }
+    if (dd > 0) /* Gonzalez's correction along dx: g . dx = phi(x1) - phi(x0) */
+        for (int i = 0; i < r; i++) g[i] += (ph1 - ph0 - gd) / dd * (m->x1[i] - m->x[i]);
+    momentum(m, m->x1, m->v1, qm->f1);
+    for (int i = 0; i < r; i++) qm->f1[i] = (qm->f1[i] - qm->p0[i]) / h - g[i];
 }

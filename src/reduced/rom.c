@@ -215,6 +215,10 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
     if (!st) st = external(m, t, m->x, m->v, m->fe);
     if (st) return st;
     m->U = m->U1;
+    if (m->qm && m->qm->inertia) { /* M(x) a = fe - fi - c(x, v) - C(x) v (qm.h) */
+        for (int i = 0; i < r; i++) m->fr[i] = m->fe[i] - m->fi[i];
+        return gal_rom_qm_acceleration(m, m->x, m->v, m->fr, m->a);
+    }
     /* a = fe - fi - Cr v */
     for (int i = 0; i < r; i++) {
         double c = 0;
@@ -258,11 +262,14 @@ static double residual(gal_rom *m)
     double am = m->am, af = m->af, rn = 0, sc = 0;
     int dg = m->o.rho_inf == 1.0;
     if (dg) discrete_gradient(m);
+    const gal_rom_qm *qm = m->qm && m->qm->inertia ? m->qm : NULL; /* the manifold's mass (qm.h) */
     for (int i = 0; i < r; i++) {
         double c = 0;
-        for (int j = 0; j < r; j++) c += m->Cr[i * r + j] * ((1 - af) * m->v1[j] + af * m->v[j]);
+        for (int j = 0; j < r && !qm; j++) c += m->Cr[i * r + j] * ((1 - af) * m->v1[j] + af * m->v[j]);
         double fi = dg ? m->fdg[i] : (1 - af) * m->fi1[i] + af * m->fi[i];
-        m->res[i] = (1 - am) * m->a1[i] + am * m->a[i] + c + fi - (1 - af) * m->fe1[i] - af * m->fe[i];
+        double in = qm ? qm->f1[i] : (1 - am) * m->a1[i] + am * m->a[i];
+        if (qm) c = qm->d1[i];
+        m->res[i] = in + c + fi - (1 - af) * m->fe1[i] - af * m->fe[i];
         rn = fmax(rn, fabs(m->res[i]));
         sc = fmax(sc, fabs(m->fi1[i]) + fabs(m->fe1[i]));
     }
@@ -275,6 +282,7 @@ static int newton(gal_rom *m, double h)
     int r = m->r, st = GAL_OK;
     double af = m->af, t1 = m->t + h;
     memcpy(m->a1, m->a, (size_t)r * sizeof(double));
+    if (m->qm && m->qm->inertia) gal_rom_qm_begin(m);
     /* modified Newton: the iteration matrix of an earlier step is kept (o.reuse_tangent) while it
      * converges fast; a fresh tangent whenever an iteration did not gain a factor of 10 (the
      * stretching directions are strongly nonlinear) */
@@ -284,6 +292,7 @@ static int newton(gal_rom *m, double h)
         newmark(m, h);
         if ((st = internal(m, m->x1, m->fi1, fresh ? m->Kr : NULL))) break;
         if ((st = external(m, t1, m->x1, m->v1, m->fe1))) break;
+        if (m->qm && m->qm->inertia) gal_rom_qm_end(m, h);
         double rn = residual(m);
         if (rn <= 1) { conv = 1; break; }
         if (!isfinite(rn)) { st = gal_error(GAL_EFAIL, "reduced model: the residual is not finite"); break; }
@@ -296,6 +305,10 @@ static int newton(gal_rom *m, double h)
             double cm = 1 - m->am, cc = (1 - af) * m->gamma * h, ck = (1 - af) * m->beta * h * h;
             for (int k = 0; k < r * r; k++) m->J[k] = cc * m->Cr[k] + ck * m->Kr[k];
             for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
+            if (m->qm && m->qm->inertia) { /* the manifold's mass, damping and convective term */
+                for (int k = 0; k < r * r; k++) m->J[k] = ck * m->Kr[k];
+                gal_rom_qm_iteration(m, m->x1, m->v1, cm, cc, m->J);
+            }
             m->hJ = 0;
             if (lu_factor(m->J, r, m->piv)) { st = gal_error(GAL_EFAIL, "reduced model: singular iteration matrix"); break; }
             m->hJ = h, fresh = 0;
@@ -402,6 +415,7 @@ double gal_rom_energy(gal_rom *m)
         if (gal_rod_eval(m->rod, m->q, &U, NULL, NULL)) return NAN;
     }
     for (int k = 0; k < m->r; k++) T += 0.5 * m->v[k] * m->v[k];
+    if (m->qm && m->qm->inertia) T = gal_rom_qm_kinetic(m, m->x, m->v);
     return T + U;
 }
 

@@ -1,7 +1,7 @@
 /* bench_rom.c: the recomputed reduced model (rom.h) against the full model on the spans of
  * tests/rom/ (or the scenes given): the same set-up, wind and steady window; dominant frequency,
  * peak-to-peak amplitudes, largest support tension, residual check, and speed. Usage:
- *   bench_rom [--derivatives 0|1] [--manifold 0|1] [--tolerance T] [--policy 1|2|3] [--relax 0|1] [--seeds N]
+ *   bench_rom [--derivatives 0|1] [--manifold 0|1|2] [--h H] [--tolerance T] [--policy 1|2|3] [--relax 0|1] [--seeds N]
  *             [--spread] [--set key=value]... [SCENE...]   (default: every tests/rom scene)
  * Steady wind: peak-to-peak; turbulent wind: RMS over the window, mean of N seeds (default 3).
  * --spread: the full model again with the wind ramp 1 s longer, how far its own figures move.
@@ -34,7 +34,8 @@ static double median(double *v, int n)
 }
 
 static double tolerance = -1;
-static int manifold = -1; /* --manifold 0|1: gal_rom_opts.manifold (-1: the default) */
+static int manifold = -1; /* --manifold 0|1|2: gal_rom_opts.manifold (-1: the default) */
+static double hstep = 0; /* --h H: the reduced model's time step (0: the scene's, as the full model) */
 static int policy = GAL_ROM_ADD_CORRECTION | GAL_ROM_ADD_MODE, relax = 1;
 
 typedef struct {
@@ -55,7 +56,7 @@ static int pair(const char *path, const char *const *ov, int nov, int deriv, gal
     gal_rom_sim_opts o;
     gal_rom_sim_default_opts(&o);
     o.derivatives = deriv;
-    o.manifold = manifold;
+    o.manifold = manifold, o.h = hstep;
     o.tolerance = tolerance, o.policy = policy, o.relax = relax;
     tw = gal_wall_time();
     int sf = gal_sim_run(&s, GAL_MODEL_FULL, &rf);
@@ -166,6 +167,7 @@ int main(int argc, char **argv)
         if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 32) ov[nov++] = argv[++i];
         else if (!strcmp(argv[i], "--derivatives") && i + 1 < argc) deriv = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--manifold") && i + 1 < argc) manifold = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--h") && i + 1 < argc) hstep = atof(argv[++i]);
         else if (!strcmp(argv[i], "--tolerance") && i + 1 < argc) tolerance = atof(argv[++i]);
         else if (!strcmp(argv[i], "--policy") && i + 1 < argc) policy = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--relax") && i + 1 < argc) relax = atoi(argv[++i]);

@@ -31,8 +31,9 @@ typedef struct gal_rom_opts {
     int derivatives;        /* 1: add the static modal derivatives (default); 0: linear modes only */
     int manifold;           /* 1: the modal derivatives as the quadratic term of a manifold
                              * q = q_eq + Phi eta + 1/2 Theta(eta, eta) in the modal coordinates
-                             * eta alone (Jain et al. 2017; their inertia dropped: the mass stays
-                             * Phi^T M Phi = I, a conservative system in eta); 0: a linear basis
+                             * eta alone (Jain et al. 2017) with its full mass P^T M P, convective
+                             * term and damping P^T C P (qm.h); 2: the same with the quadratic
+                             * part's inertia dropped (mass Phi^T M Phi = I); 0: a linear basis
                              * V = [Phi, Theta] (the modal derivatives as coordinates) */
     double deflation_tol;   /* drop a basis vector whose M-norm falls below this share after
                              * orthogonalization; default 1e-6 */
