@@ -1,6 +1,6 @@
 /* ecsw.c: energy-conserving sampling and weighting of the recomputed reduced model (ecsw.h):
- * the training states, the per-element snapshot matrices, their non-negative fits (nnls.c), the
- * sampled entries of the basis, and the check that re-samples. The evaluations from the sample
+ * the sample's build (its training in ecsw_train.c), the constants, the sampled entries of the
+ * basis, and the check that re-samples. The evaluations from the sample
  * are in ecsw_eval.c. */
 #include "gallop/reduced/ecsw.h"
 #include "gallop/base/core.h"
@@ -20,7 +20,7 @@ void gal_rom_hyper_free(gal_rom *m)
         free(h->set[s].elem), free(h->set[s].w), free(h->set[s].idx), free(h->set[s].uq), free(h->set[s].Vu), free(h->set[s].rw);
         free(h->set[s].Qz), free(h->set[s].Tt), free(h->set[s].Pc), free(h->set[s].qs);
     }
-    free(h->T); free(h->gu); free(h->Jdd); free(h->fc); free(h->Kc); free(h->snap); free(h->F0);
+    free(h->T); free(h->gu); free(h->fc); free(h->Kc); free(h->snap); free(h->F0); free(h->emax);
     free(h);
     m->hyper = NULL;
 }
@@ -78,174 +78,6 @@ static int sample_entries(gal_rom *m)
     return GAL_OK;
 }
 
-/* Column e of a snapshot block: B_e^T g_e for element e's local gradient g (11 or 7 entries
- * mapped like gal_rod_element_q) at the reconstructed state m->q; B the tangent basis there. */
-static void project_local(const gal_rom *m, const double *B, const int *qi, const double *g, int nloc, double *col)
-{
-    const gal_rod *rod = m->rod;
-    int n = m->ndof, r = m->r;
-    static const int load_to_el[7] = {0, 1, 2, 3, 4, 5, 9};
-    memset(col, 0, (size_t)r * sizeof(double));
-    for (int a = 0; a < nloc; a++) {
-        int qa = qi[nloc == 7 ? load_to_el[a] : a];
-        int d = qa < 0 ? -1 : rod->dof[qa];
-        if (d < 0 || g[a] == 0) continue;
-        for (int k = 0; k < r; k++) col[k] += B[(size_t)k * n + d] * g[a];
-    }
-}
-
-
-/* Kr = V_e^T H_e V_e (r x r) of element e's Hessian at the state in m->q (the basis at the
- * equilibrium: V, on the manifold Phi plus the curvature sum_a g_a theta_a), and its gradient's
- * projection into col (r). */
-static int element_reduced(gal_rom *m, int e, double *col, double *Kr)
-{
-    const gal_rod *rod = m->rod;
-    int n = m->ndof, r = m->r, NQ = GAL_ROD_ELEMENT_NQ, qi[GAL_ROD_ELEMENT_NQ], d[GAL_ROD_ELEMENT_NQ];
-    double U, g[GAL_ROD_ELEMENT_NQ], H[GAL_ROD_ELEMENT_NQ * GAL_ROD_ELEMENT_NQ], *T = m->hyper->T;
-    gal_rod_element_q(rod, e, qi);
-    int st = gal_rod_element_eval(rod, e, m->q, &U, g, H);
-    if (st) return st;
-    project_local(m, m->V, qi, g, NQ, col);
-    for (int a = 0; a < NQ; a++) d[a] = qi[a] < 0 ? -1 : rod->dof[qi[a]];
-    for (int a = 0; a < NQ; a++) { /* T = H V_e */
-        for (int j = 0; j < r; j++) T[a * r + j] = 0;
-        for (int b = 0; b < NQ; b++)
-            if (d[b] >= 0 && H[a * NQ + b] != 0)
-                for (int j = 0; j < r; j++) T[a * r + j] += H[a * NQ + b] * m->V[(size_t)j * n + d[b]];
-    }
-    memset(Kr, 0, (size_t)r * r * sizeof(double));
-    for (int a = 0; a < NQ; a++)
-        if (d[a] >= 0)
-            for (int i = 0; i < r; i++) {
-                double vi = m->V[(size_t)i * n + d[a]];
-                for (int j = 0; j < r; j++) Kr[i * r + j] += vi * T[a * r + j];
-            }
-    if (m->qm)
-        for (int a = 0; a < NQ; a++)
-            if (d[a] >= 0 && g[a] != 0)
-                for (int i = 0; i < r; i++)
-                    for (int j = 0; j < r; j++) Kr[i * r + j] += g[a] * m->qm->Th[(size_t)m->qm->pair[i * r + j] * n + d[a]];
-    return GAL_OK;
-}
-
-/* The snapshot matrix of sample s (0: the rod's energy, 1: the loads) over every element, with
- * each training state's block normalized by its target's norm; A (ns r x nel) and b (ns r). */
-static int snapshots(gal_rom *m, int set, double *A, double *b)
-{
-    gal_rom_hyper *h = m->hyper;
-    const gal_rod *rod = m->rod;
-    int r = m->r, nel = set == 0 ? gal_rod_element_count(rod) : rod->p.elements, rows = h->ns * r;
-    int NQ = GAL_ROD_ELEMENT_NQ, qi[GAL_ROD_ELEMENT_NQ];
-    double g[GAL_ROD_ELEMENT_NQ], U, *col = m->fr;
-    for (int s = 0; s < h->ns; s++) {
-        const double *x = h->snap + (size_t)s * (2 * r + 1), *v = x + r, t = x[2 * r];
-        gal_rom_reconstruct_at(m, x, v);
-        const double *B = gal_rom_basis_at(m, x);
-        for (int e = 0; e < nel; e++) {
-            double *a = A + (size_t)e * rows + (size_t)s * r;
-            int st;
-            gal_rod_element_q(rod, e, qi);
-            if (set == 0) {
-                if ((st = gal_rod_element_eval(rod, e, m->q, &U, g, NULL))) return st;
-                project_local(m, B, qi, g, NQ, a);
-            } else {
-                if ((st = m->force.element(m->force.ctx, t, m->q, m->vq, e, g))) return st;
-                project_local(m, B, qi, g, 7, a);
-            }
-        }
-    }
-    if (set == 0) { /* less the equilibrium's force and its linear part: the nonlinear remainder */
-        gal_rom_reconstruct_at(m, NULL, NULL);
-        for (int e = 0; e < nel; e++) {
-            int st = element_reduced(m, e, col, h->Kc);
-            if (st) return st;
-            for (int s = 0; s < h->ns; s++) {
-                const double *x = h->snap + (size_t)s * (2 * r + 1);
-                for (int k = 0; k < r; k++) {
-                    double kx = 0;
-                    for (int j = 0; j < r; j++) kx += h->Kc[k * r + j] * x[j];
-                    A[(size_t)e * rows + (size_t)s * r + k] -= col[k] + kx;
-                }
-            }
-        }
-    }
-    /* the target, and each component weighed by its RMS over the training states (every
-     * coordinate's force counts, not only the stiff stretching ones), floored at 1e-6 of the largest */
-    double *rw = h->set[set].rw, big = 0;
-    for (int k = 0; k < r; k++) rw[k] = 0;
-    for (int s = 0; s < h->ns; s++)
-        for (int k = 0; k < r; k++) {
-            double sum = 0;
-            for (int e = 0; e < nel; e++) sum += A[(size_t)e * rows + (size_t)s * r + k];
-            b[s * r + k] = sum, rw[k] += sum * sum / h->ns;
-        }
-    for (int k = 0; k < r; k++) big = fmax(big, sqrt(rw[k]));
-    for (int k = 0; k < r; k++) rw[k] = big > 0 ? 1 / fmax(sqrt(rw[k]), 1e-6 * big) : 1;
-    /* the loads along the modal derivatives (stretching) count against a tenth of the internal
-     * force there, which they hardly move, not against their own small size (measured: 14 load
-     * elements instead of 26 at 100 elements, amplitudes within 0.2% on bersimis_250_crescent) */
-    if (set == 1)
-        for (int k = m->nmodes; k < r; k++) rw[k] = fmin(rw[k], 10 * h->set[0].rw[k]);
-    for (int s = 0; s < h->ns; s++) {
-        double nb = 0;
-        for (int k = 0; k < r; k++) {
-            b[s * r + k] *= rw[k], nb += b[s * r + k] * b[s * r + k];
-            for (int e = 0; e < nel; e++) A[(size_t)e * rows + (size_t)s * r + k] *= rw[k];
-        }
-        nb = nb > 0 ? 1 / sqrt(nb) : 0;
-        for (int k = 0; k < r; k++) b[s * r + k] *= nb;
-        for (int e = 0; e < nel; e++)
-            for (int k = 0; k < r; k++) A[(size_t)e * rows + (size_t)s * r + k] *= nb;
-    }
-    return GAL_OK;
-}
-
-/* Fit sample s by NNLS on the training states; the elements with positive weight are kept. On a
- * mirror-symmetric span the columns are mirror pairs (one weight for both): the sampled energy and
- * loads keep the symmetry, and a symmetric motion stays symmetric. */
-static int fit(gal_rom *m, int set)
-{
-    gal_rom_hyper *h = m->hyper;
-    const gal_rod *rod = m->rod;
-    int r = m->r, nel = rod->p.elements, ne = set == 0 ? gal_rod_element_count(rod) : nel, rows = h->ns * r, st, it;
-    double *A = malloc((size_t)rows * ne * sizeof(double)), *b = malloc((size_t)rows * sizeof(double));
-    double *w = malloc((size_t)ne * sizeof(double));
-    int *grp = malloc((size_t)ne * sizeof(int)), ng = 0;
-    if (!A || !b || !w || !grp) {
-        free(A), free(b), free(w), free(grp);
-        return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
-    }
-    st = snapshots(m, set, A, b);
-    for (int e = 0; e < ne && !st; e++) { /* the columns of the groups, in place */
-        int me = !h->mirror ? e : set == 0 ? gal_rod_element_mirror(rod, e) : nel - 1 - e;
-        if (me < e) continue;
-        double *c = A + (size_t)ng * rows, *a = A + (size_t)e * rows, *am = A + (size_t)me * rows;
-        for (int i = 0; i < rows; i++) c[i] = a[i] + (me != e ? am[i] : 0);
-        grp[ng++] = e;
-    }
-    if (!st) st = gal_nnls(rows, ng, A, b, m->o.hyper_tol, 0, w, &it);
-    if (!st) {
-        gal_rom_hyper_set *S = &h->set[set];
-        double rn = 0, nb = 0;
-        for (int i = 0; i < rows; i++) { /* the fit's residual */
-            double s = -b[i];
-            for (int k = 0; k < ng; k++) s += w[k] > 0 ? A[(size_t)k * rows + i] * w[k] : 0;
-            rn += s * s, nb += b[i] * b[i];
-        }
-        S->fit_error = nb > 0 ? sqrt(rn / nb) : 0;
-        S->n = 0;
-        for (int k = 0; k < ng; k++) {
-            if (!(w[k] > 0)) continue;
-            int e = grp[k], me = !h->mirror ? e : set == 0 ? gal_rod_element_mirror(rod, e) : nel - 1 - e;
-            S->elem[S->n] = e, S->w[S->n++] = w[k];
-            if (me != e) S->elem[S->n] = me, S->w[S->n++] = w[k];
-        }
-    }
-    free(A), free(b), free(w), free(grp);
-    return st;
-}
-
 /* Whether the span is its own mirror image (level, no eccentric ice, a symmetric equilibrium). */
 static int mirror_symmetric(const gal_rom *m)
 {
@@ -278,7 +110,7 @@ static int constants(gal_rom *m)
     for (int k = 0; k < S->n; k++) {
         gal_rod_element_q(rod, S->elem[k], qi);
         if ((st = gal_rod_element_eval(rod, S->elem[k], m->q, &Ue, g, NULL))) return st;
-        if ((st = element_reduced(m, S->elem[k], col, Ke))) return st;
+        if ((st = gal_rom_hyper_element_reduced(m, S->elem[k], col, Ke))) return st;
         for (int i = 0; i < r; i++) h->fc[i] -= S->w[k] * col[i];
         for (int i = 0; i < r * r; i++) h->Kc[i] -= S->w[k] * Ke[i];
         h->Uc -= S->w[k] * Ue;
@@ -290,8 +122,8 @@ static int constants(gal_rom *m)
 /* Both fits, the constants and the sampled entries from the training states held. */
 static int resample(gal_rom *m)
 {
-    int st = fit(m, 0);
-    if (!st && m->hyper->loads) st = fit(m, 1);
+    int st = gal_rom_hyper_fit(m, 0);
+    if (!st && m->hyper->loads) st = gal_rom_hyper_fit(m, 1);
     if (!st) st = constants(m);
     if (!st) st = sample_entries(m);
     return st;
@@ -315,7 +147,7 @@ static int add_snapshot(gal_rom_hyper *h, int r, const double *x, const double *
 int gal_rom_hyper_build(gal_rom *m)
 {
     const gal_rod *rod = m->rod;
-    int r = m->r, nm = m->nmodes, nd = r - nm, nel = rod->p.elements, st = GAL_OK;
+    int r = m->r, nel = rod->p.elements, st = GAL_OK;
     gal_rom_hyper *h = calloc(1, sizeof *h);
     if (!h) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample");
     m->hyper = h;
@@ -330,9 +162,9 @@ int gal_rom_hyper_build(gal_rom *m)
     }
     h->fc = malloc((size_t)r * sizeof(double)), h->Kc = malloc((size_t)r * r * sizeof(double)), h->F0 = malloc((size_t)r * sizeof(double));
     h->gu = malloc((size_t)m->nq * sizeof(double));
-    h->T = malloc((size_t)GAL_ROD_ELEMENT_NQ * r * sizeof(double)), h->Jdd = malloc((size_t)(nd ? nd * nd : 1) * sizeof(double));
+    h->T = malloc((size_t)GAL_ROD_ELEMENT_NQ * r * sizeof(double));
     double *x = malloc((size_t)3 * r * sizeof(double));
-    if (st || !h->gu || !h->T || !h->Jdd || !h->fc || !h->Kc || !h->F0 || !x || nd > 256) {
+    if (st || !h->gu || !h->T || !h->fc || !h->Kc || !h->F0 || !x) {
         free(x);
         return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample (basis %d)", r);
     }

@@ -33,9 +33,9 @@ typedef struct gal_rom_hyper {
                                 * Hessian exact at x = 0: U_h = U_c + f_c.x + x.K_c x/2 + sum w U_e */
     double *F0;                /* r: V^T grad U(q_eq) */
     double amp;                /* m: the training states' largest translation */
+    double *emax;              /* nmodes: each mode's largest amplitude in the training states */
     int ns, cap;               /* training states: (x, v, t) rows of 2 r + 1 */
     double *snap;
-    double *Jdd;               /* the modal-derivative block of a training state's reduced tangent */
     double *gu;                /* nq: scratch of the projections */
     double *T;                 /* GAL_ROD_ELEMENT_NQ x r: scratch of the tangent */
     int mirror;                /* mirror pairs share one weight (a symmetric span) */
@@ -45,5 +45,13 @@ typedef struct gal_rom_hyper {
 
 /* Training state s (deterministic in s) into x and its velocity into v (r each). */
 int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);
+/* Fit sample `set` (0: the rod's energy, 1: the loads) by NNLS on the training states held (its
+ * candidates' snapshots against the exact targets); the elements with positive weight are kept.
+ * On a mirror-symmetric span the columns are mirror pairs (one weight for both): the sampled
+ * energy and loads keep the symmetry, and a symmetric motion stays symmetric. */
+int gal_rom_hyper_fit(gal_rom *m, int set);
+/* Element e's gradient at the state in m->q projected on V into col (r), and its Hessian
+ * projected, V_e^T H_e V_e (plus the curvature on the manifold), into Kr (r x r). */
+int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr);
 
 #endif

@@ -13,9 +13,11 @@
  * below opts.hyper_tol of the target) of the per-element reduced forces V_e^T grad U_e, less their
  * value and linear part at the equilibrium, to their sum on training states: modal states at the
  * scale of the motion (the sag, at least 1% of the span, and opts.hyper_twist for the twist) with
- * the modal-derivative coordinates relaxed quasi-statically (Newton on their block of the exact
- * reduced tangent); each coordinate's force weighed by its RMS over the states, each state
- * normalized; on a mirror-symmetric span the columns are mirror pairs. The model checks its sample (gal_rom_hyper_check) against the exact projected force at
+ * the modal-derivative coordinates at zero; each coordinate's force weighed by its RMS over the
+ * states, each state normalized; on a mirror-symmetric span the columns are mirror pairs. On a
+ * mesh of more than 128 elements the columns are those of 128 candidates of each kind spread
+ * over the span (ecsw_train.c) and the targets the assembled forces: the set-up's cost grows with
+ * the mesh only by one evaluation of the rod and the loads per training state. The model checks its sample (gal_rom_hyper_check) against the exact projected force at
  * its own state and, beyond opts.hyper_check_tol, adds that state to the training set and
  * re-samples. */
 #ifndef GALLOP_ECSW_H
