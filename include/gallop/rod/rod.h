@@ -154,6 +154,9 @@ int gal_rod_eval_term(const gal_rod *rod, int k, const double *q, double *energy
  * span (edge e <-> edge elements-1-e, node i <-> node elements-i). gal_rod_element_q lists the
  * GAL_ROD_ELEMENT_NQ configuration entries of element e in the node stencil's order (-1: absent). */
 #define GAL_ROD_ELEMENT_NQ 11
+/* 1 when every term of the rod has the element split (bundle_irvine has none: its fields lie outside
+ * the 11 entries), 0 otherwise. */
+int gal_rod_element_form(const gal_rod *rod);
 int gal_rod_element_count(const gal_rod *rod);
 /* The mirror image of energy element e. */
 int gal_rod_element_mirror(const gal_rod *rod, int e);
