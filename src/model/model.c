@@ -10,6 +10,27 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The sub-conductors' differential-stretch fields of an equivalent bundle (src/rod/bundle_irvine.c):
+ * with S = sum_k p_k p_k^T over the offsets p_k = R (cos a_k, sin a_k) (horizontal, vertical; a_k
+ * the orientation plus 2 pi k / n), the fields are S's eigenvectors of non-zero eigenvalue lambda:
+ * for 3 to 8 sub-conductors S = (n R^2 / 2) I (two fields, horizontal and vertical), for a twin
+ * 2 p_1 p_1^T (one field, along p_1). Stiffness EA_sub lambda, inertia m_sub lambda plus the spacers'
+ * (half their inertia about the bundle axis, about each axis across: a plane frame) smeared over
+ * the chord. With the twist free at the supports the yokes do not hold the fields: none. */
+static void bundle_fields(const gal_scene *sc, gal_rod_params *p, double EA1, double m1)
+{
+    int n = sc->bundle.subconductors;
+    double R = sc->bundle.radius, L = sc->span.length, h = sc->span.height_difference;
+    double chord = sqrt(L * L + h * h), a = sc->bundle.orientation;
+    if (!p->torsion || !p->twist_clamped) return;
+    p->bundle_fields = n == 2 ? 1 : 2;
+    double lambda = n == 2 ? 2 * R * R : n * R * R / 2;
+    p->bundle_field_k = EA1 * lambda;
+    p->bundle_field_inertia = m1 * lambda + sc->bundle.spacers * 0.5 * sc->bundle.spacer_inertia / chord;
+    if (n == 2) p->bundle_field_dir[0][0] = cos(a), p->bundle_field_dir[0][1] = sin(a);
+    else p->bundle_field_dir[0][0] = 1, p->bundle_field_dir[1][1] = 1;
+}
+
 /* A bundle carried as one rod (the equivalent model): n sub-conductors at radius R on the bundle
  * circle, each the scene's conductor with its ice and its share of the span's tension, all moving
  * with the bundle's centre and twist (rigid spacers, the sub-conductors clamped at the yokes).
@@ -30,6 +51,7 @@ static void bundle_equivalent(const gal_scene *sc, gal_model_rod *r)
     p->ecc_mass *= n; /* every sub-conductor's ice, at the same offset from its own axis */
     p->bundle_radius2 = R * R;
     if (r->spec == GAL_BY_TENSION) r->spec_value *= n;
+    bundle_fields(sc, p, p->EA / n, m1);
 }
 
 /* The rod of the span: its parameters and equilibrium specification. */

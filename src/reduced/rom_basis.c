@@ -198,7 +198,9 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     m->fscale = sqrt(fs);
     m->ffloor = 20 * 2.2e-16 * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0] * cs;
     free(MV); free(c);
-    if (m->o.hyper && gal_rom_hyper_build(m)) return gal_rom_free(m); /* the sample (ecsw.h) */
+    /* the sample (ecsw.h); a rod with a term that has no element split (an equivalent bundle's
+     * differential-stretch fields, src/rod/bundle_irvine.c) is projected exactly */
+    if (m->o.hyper && gal_rod_element_form(rod) && gal_rom_hyper_build(m)) return gal_rom_free(m);
     if (gal_rom_start(m, 0.0, q_eq, NULL)) return gal_rom_free(m);
     m->build_time_s = gal_wall_time() - t0;
     return m;

@@ -13,6 +13,13 @@
 /* element-local index of edge-local variable a (x_e, x_{e+1}, theta_e) */
 static const int edge_to_el[7] = {0, 1, 2, 3, 4, 5, 9};
 
+int gal_rod_element_form(const gal_rod *rod)
+{
+    for (int k = 0; k < rod->nterm; k++)
+        if (!rod->term[k]->node && !rod->term[k]->edge) return 0;
+    return 1;
+}
+
 int gal_rod_element_count(const gal_rod *rod)
 {
     return rod->p.elements + rod->nn - 2;

@@ -18,6 +18,7 @@ void gal_rod_terms_init(gal_rod *rod)
     if (p->torsion && p->twist_clamped) rod->term[n++] = &gal_rod_term_torsion_clamps;
     if (p->torsion && p->twist_clamped && p->bundle_radius2 > 0)
         rod->term[n++] = &gal_rod_term_bundle_clamps;
+    if (p->torsion && p->twist_clamped && p->bundle_fields > 0) rod->term[n++] = &gal_rod_term_bundle_irvine;
     if (rod->ecc_c && p->gravity != 0) rod->term[n++] = &gal_rod_term_ice;
     if (p->gravity != 0) rod->term[n++] = &gal_rod_term_gravity;
     rod->nterm = n;

@@ -11,7 +11,7 @@
 #include <string.h>
 
 /* Fill nd; GAL_EFAIL with a message when the rod folds back on itself at node i. */
-static int geometry(const gal_rod *rod, int i, const double *q, gal_rod_node *nd)
+int gal_rod_node_geometry(const gal_rod *rod, int i, const double *q, gal_rod_node *nd)
 {
     for (int k = 0; k < 3; k++) {
         nd->e0[k] = q[3 * i + k] - q[3 * (i - 1) + k];
@@ -73,7 +73,7 @@ int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, 
 {
     for (int i = 1; i <= rod->nn - 2; i++) {
         gal_rod_node nd;
-        int st = geometry(rod, i, q, &nd);
+        int st = gal_rod_node_geometry(rod, i, q, &nd);
         if (st) return st;
         double g[8], H[8][8], E = 0;
         memset(g, 0, sizeof g);
@@ -89,7 +89,7 @@ int gal_rod_node_local(const gal_rod *rod, const gal_rod_term *const *t, int nt,
                        double *U, double *g11, double *H11)
 {
     gal_rod_node nd;
-    int st = geometry(rod, i, q, &nd);
+    int st = gal_rod_node_geometry(rod, i, q, &nd);
     if (st) return st;
     double g[8], H[8][8];
     memset(g, 0, sizeof g);

@@ -78,8 +78,29 @@ static size_t stencil_pairs(const gal_rod *rod, long *pairs)
                 if (da >= 0 && db >= 0 && da <= db) pairs[np++] = (long)da * n + db;
             }
     }
+    for (int i = 1; i <= nn - 2 && rod->p.torsion && rod->p.bundle_fields; i++) {
+        int qa[GAL_ROD_AUX_NL], na = gal_rod_aux_q(rod, i, qa);
+        for (int a = 0; a < na; a++)
+            for (int b = 0; b < na; b++) {
+                int da = qa[a] < 0 ? -1 : rod->dof[qa[a]], db = qa[b] < 0 ? -1 : rod->dof[qa[b]];
+                if (da >= 0 && db >= 0 && da <= db && (a >= NL || b >= NL)) pairs[np++] = (long)da * n + db;
+            }
+    }
     for (long d = 0; d < n; d++) pairs[np++] = d * n + d;
     return np;
+}
+
+/* The node stencil at interior node i widened by the bundle fields of its two edges:
+ * gal_rod_node_q's 11 entries, then per field f a_{f,i-1}, a_{f,i}. Returns the count. */
+int gal_rod_aux_q(const gal_rod *rod, int i, int *qi)
+{
+    int nel = rod->p.elements, nf = rod->p.torsion ? rod->p.bundle_fields : 0;
+    gal_rod_node_q(rod, i, qi);
+    for (int f = 0; f < nf; f++) {
+        qi[NL + 2 * f] = 3 * rod->nn + (1 + f) * nel + i - 1;
+        qi[NL + 2 * f + 1] = 3 * rod->nn + (1 + f) * nel + i;
+    }
+    return NL + 2 * nf;
 }
 
 /* The upper triangle's pattern from the stencils' pairs, without sorting: the pairs bucketed by
@@ -88,7 +109,8 @@ static size_t stencil_pairs(const gal_rod *rod, long *pairs)
 int gal_rod_pattern_build(gal_rod *rod)
 {
     int n = rod->ndof;
-    size_t cap = (size_t)(rod->nn > 2 ? rod->nn - 2 : 0) * NL * NL + (size_t)rod->p.elements * EL * EL + (size_t)n;
+    size_t cap = (size_t)(rod->nn > 2 ? rod->nn - 2 : 0) * GAL_ROD_AUX_NL * GAL_ROD_AUX_NL * 2 +
+                 (size_t)rod->p.elements * EL * EL + (size_t)n;
     long *pairs = malloc(cap * sizeof(long));
     int *rowptr = calloc((size_t)n + 1, sizeof(int)), *cols = malloc(cap * sizeof(int));
     int *mark = malloc((size_t)n * sizeof(int));

@@ -32,24 +32,36 @@ gal_rod *gal_rod_free(gal_rod *rod)
     return NULL;
 }
 
-/* Free dofs numbered node by node (positions, then the twist of the edge that follows), so that
- * the tangent is banded before any reordering. */
+/* Free dofs numbered node by node (positions, then the twist and the bundle fields of the edge
+ * that follows), so that the tangent is banded before any reordering. */
 static void number_dofs(gal_rod *rod)
 {
-    int nn = rod->nn, nel = rod->p.elements, nd = 0;
+    int nn = rod->nn, nel = rod->p.elements, nd = 0, nf = rod->p.torsion ? rod->p.bundle_fields : 0;
     for (int k = 0; k < rod->nq; k++) rod->dof[k] = -1;
     for (int i = 0; i < nn; i++) {
         if (i > 0 && i < nn - 1)
             for (int k = 0; k < 3; k++) rod->free_q[nd] = 3 * i + k, rod->dof[3 * i + k] = nd++;
-        if (rod->p.torsion && i < nel) rod->free_q[nd] = 3 * nn + i, rod->dof[3 * nn + i] = nd++;
+        if (rod->p.torsion && i < nel)
+            for (int f = 0; f <= nf; f++) {
+                int k = 3 * nn + f * nel + i;
+                rod->free_q[nd] = k, rod->dof[k] = nd++;
+            }
     }
     rod->ndof = nd;
+}
+
+int gal_rod_nq(const gal_rod_params *p)
+{
+    int nel = p->elements;
+    return 3 * (nel + 1) + (p->torsion ? (1 + p->bundle_fields) * nel : 0);
 }
 
 gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
 {
     if (p->elements < 2 || !(p->length > 0) || !(p->unstretched_length > 0) || !(p->EA > 0) ||
-        !(p->EI >= 0) || !(p->mass > 0) || (p->torsion && (!(p->GJ > 0) || !(p->polar_inertia > 0)))) {
+        !(p->EI >= 0) || !(p->mass > 0) || (p->torsion && (!(p->GJ > 0) || !(p->polar_inertia > 0))) ||
+        p->bundle_fields < 0 || p->bundle_fields > 2 ||
+        (p->bundle_fields && (!p->torsion || !(p->bundle_field_k > 0) || !(p->bundle_field_inertia > 0)))) {
         gal_error(GAL_EINPUT, "rod: invalid parameters (elements %d, length %g, L0 %g, EA %g, EI %g, "
                   "GJ %g, mass %g, polar inertia %g)", p->elements, p->length, p->unstretched_length,
                   p->EA, p->EI, p->GJ, p->mass, p->polar_inertia);
@@ -60,14 +72,14 @@ gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0)
     rod->p = *p;
     int nel = p->elements, nn = nel + 1;
     rod->nn = nn;
-    rod->nq = 3 * nn + (p->torsion ? nel : 0);
+    rod->nq = gal_rod_nq(p);
     rod->dof = malloc((size_t)rod->nq * sizeof(int));
     rod->free_q = malloc((size_t)rod->nq * sizeof(int));
     rod->l0 = malloc((size_t)nel * sizeof(double));
     rod->tbar = malloc((size_t)3 * nel * sizeof(double));
     rod->abar = malloc((size_t)3 * nel * sizeof(double));
     rod->node_mass = calloc((size_t)nn, sizeof(double));
-    rod->edge_inertia = calloc((size_t)nel, sizeof(double));
+    rod->edge_inertia = calloc((size_t)nel * (1 + (p->torsion ? p->bundle_fields : 0)), sizeof(double));
     rod->q0 = malloc((size_t)rod->nq * sizeof(double));
     if (!rod->dof || !rod->free_q || !rod->l0 || !rod->tbar || !rod->abar || !rod->node_mass ||
         !rod->edge_inertia || !rod->q0) {
@@ -100,6 +112,8 @@ void gal_rod_set_unstretched_length(gal_rod *rod, double L0)
         rod->node_mass[j] += 0.5 * rod->p.mass * l0;
         rod->node_mass[j + 1] += 0.5 * rod->p.mass * l0;
         rod->edge_inertia[j] = rod->p.polar_inertia * l0;
+        for (int f = 0; rod->p.torsion && f < rod->p.bundle_fields; f++)
+            rod->edge_inertia[(1 + f) * nel + j] = rod->p.bundle_field_inertia * l0;
     }
     gal_rod_mass_build(rod);
 }

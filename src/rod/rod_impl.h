@@ -11,6 +11,10 @@
 
 /* Configuration indices of the node stencil at interior node i (-1 for absent twists). */
 void gal_rod_node_q(const gal_rod *rod, int i, int *qi);
+/* The node stencil widened by a bundle's differential-stretch fields (src/rod/bundle_irvine.c):
+ * gal_rod_node_q's NL entries, then a_{f,i-1}, a_{f,i} per field f; returns the count. */
+#define GAL_ROD_AUX_NL (NL + 4)
+int gal_rod_aux_q(const gal_rod *rod, int i, int *qi);
 /* The tangent's pattern (rod->K) and the slot maps of the node and edge stencils. */
 int gal_rod_pattern_build(gal_rod *rod);
 
@@ -34,6 +38,10 @@ void gal_rod_twist_strain(const gal_rod *rod, int i, const double *q, const gal_
 /* H += 2 kt (gm gm^T + m d2m), d2m the symmetrized second derivative of mref over (e0, e1). */
 void gal_rod_twist_hessian(const gal_rod_node *nd, gal_rod_twist *s, double kt,
                            double (*H)[8]);
+
+/* The geometry of the node stencil at interior node i (src/rod/node.c); GAL_EFAIL with a message
+ * when the rod folds back on itself there. */
+int gal_rod_node_geometry(const gal_rod *rod, int i, const double *q, gal_rod_node *nd);
 
 /* One pass over the interior nodes for the node terms t[0..nt-1]: per node the geometry (GAL_EFAIL
  * with a message when the rod folds back on itself), the sum of the terms' energies, gradients

@@ -190,7 +190,7 @@ static int start(const gal_rod_params *p, gal_statics_spec spec, double value, g
     gal_rod_params rp = *p;
     rp.unstretched_length = cat->L0;
     int nel = p->elements, nn = nel + 1;
-    int nq = 3 * nn + (p->torsion ? nel : 0);
+    int nq = gal_rod_nq(p);
     double *q = calloc((size_t)nq, sizeof(double));
     if (!q) return gal_error(GAL_ENOMEM, "statics: out of memory");
     for (int i = 0; i < nn; i++) {

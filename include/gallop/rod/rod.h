@@ -49,6 +49,16 @@ typedef struct gal_rod_params {
     /* m^2: a bundle carried as one rod (src/rod/bundle.c): the square of the radius at which its
      * sub-conductors sit, whose tension stiffens the twist by T R^2; 0 = a single conductor */
     double bundle_radius2;
+    /* the bundle's differential-stretch fields (src/rod/bundle_irvine.c; 0 = none, nothing changes):
+     * bundle_fields (1 for a twin, 2 for 3 to 8 sub-conductors) angles per edge, appended to the
+     * configuration after the twists, each a rotation of the bundle's section about an axis across
+     * the span that moves the sub-conductor at offset p_k (m) axially by u_f . p_k times it; with the
+     * stiffness bundle_field_k = EA_sub sum_k (u_f . p_k)^2 (N m^2), the inertia bundle_field_inertia
+     * (kg m^2/m) and the directions u_f = (horizontal, vertical) across the span */
+    int bundle_fields;
+    double bundle_field_k;
+    double bundle_field_inertia;
+    double bundle_field_dir[2][2];
 } gal_rod_params;
 
 struct gal_rod;
@@ -80,15 +90,19 @@ typedef struct gal_rod_term {
  *   bundle_torsion   src/rod/bundle.c     torsion on and bundle_radius2 > 0 (node)
  *   torsion_clamps   src/rod/torsion.c    torsion on and twist_clamped: the twist held at the supports
  *   bundle_clamps    src/rod/bundle.c     the same, for the bundle's tension (bundle_radius2 > 0)
+ *   bundle_irvine    src/rod/bundle_irvine.c  torsion on, twist clamped and bundle_fields > 0: the
+ *                    sub-conductors' differential stretch as the bundle twists on a sagged span
  *   ice_eccentricity src/rod/ice.c        eccentric ice (ecc_mass > 0, ecc != 0, torsion) and gravity
  *   gravity          src/rod/gravity.c    gravity != 0 */
 extern const gal_rod_term gal_rod_term_extension, gal_rod_term_bending, gal_rod_term_torsion,
     gal_rod_term_torsion_clamps, gal_rod_term_ice, gal_rod_term_gravity, gal_rod_term_bundle_torsion,
-    gal_rod_term_bundle_clamps;
-#define GAL_ROD_MAX_TERMS 8
+    gal_rod_term_bundle_clamps, gal_rod_term_bundle_irvine;
+#define GAL_ROD_MAX_TERMS 9
 
 /* The immutable model of a discretized span. The full configuration q holds 3 (elements + 1)
- * node positions (m) followed, when torsion is on, by `elements` twist angles (rad). */
+ * node positions (m) followed, when torsion is on, by `elements` twist angles (rad), and then by
+ * bundle_fields x `elements` angles (rad) of a bundle's differential-stretch fields (field f of
+ * edge j at 3 (elements + 1) + (1 + f) elements + j). */
 typedef struct gal_rod {
     gal_rod_params p;
     int nn;             /* nodes = elements + 1 */
@@ -100,7 +114,8 @@ typedef struct gal_rod {
     double *tbar;       /* 3 elements: reference unit tangents */
     double *abar;       /* 3 elements: reference frame first directors (normal to tbar) */
     double *node_mass;  /* nn: lumped translational mass, kg */
-    double *edge_inertia; /* elements: polar moment of inertia of each edge, kg m^2 */
+    double *edge_inertia; /* elements (1 + bundle_fields): polar moment of inertia of each edge,
+                           * then the bundle fields' inertia of each edge, kg m^2 */
     double *q0;         /* nq: the configuration the reference frames were taken from */
     gal_csc *K;         /* the tangent's pattern (values are scratch for gal_rod_tangent) */
     gal_csc *M;         /* the mass matrix on the same pattern: lumped, plus the eccentric ice's
@@ -116,6 +131,8 @@ typedef struct gal_rod {
 /* Build the model; the reference geometry q0 (nq entries; positions, twists) sets the reference
  * frames (the equilibrium or its catenary start). NULL with a message on bad parameters. */
 gal_rod *gal_rod_alloc(const gal_rod_params *p, const double *q0);
+/* The size of the full configuration of a rod of parameters p. */
+int gal_rod_nq(const gal_rod_params *p);
 gal_rod *gal_rod_free(gal_rod *rod);
 
 /* Energy U(q) (J), gradient dU/dq over the full configuration (forces = -grad; the entries of
@@ -137,6 +154,9 @@ int gal_rod_eval_term(const gal_rod *rod, int k, const double *q, double *energy
  * span (edge e <-> edge elements-1-e, node i <-> node elements-i). gal_rod_element_q lists the
  * GAL_ROD_ELEMENT_NQ configuration entries of element e in the node stencil's order (-1: absent). */
 #define GAL_ROD_ELEMENT_NQ 11
+/* 1 when every term of the rod has the element split (bundle_irvine has none: its fields lie outside
+ * the 11 entries), 0 otherwise. */
+int gal_rod_element_form(const gal_rod *rod);
 int gal_rod_element_count(const gal_rod *rod);
 /* The mirror image of energy element e. */
 int gal_rod_element_mirror(const gal_rod *rod, int e);
