@@ -74,6 +74,30 @@ static double misfit(gal_bundle *b, gal_statics_spec spec, double value)
     return gal_rod_sag(rod, q) + b->off[0][2] - value;
 }
 
+/* The first-order move of the equilibrium b->state (converged at the rods' unstretched length) to
+ * the length L0: dz = -K^-1 (g(L0) - g), K the tangent at the equilibrium (positive definite
+ * there). Without it Newton would start the new length from the old shape: a length increase of
+ * more than the sub-conductors' elastic stretch (low tension, heavy spacers) leaves every element
+ * compressed there, and the tangent indefinite. */
+static int predict(newton_ws *w, double L0)
+{
+    gal_bundle *b = w->b;
+    int n = b->ndof, st;
+    if ((st = gal_bundle_eval(b, NULL, NULL, 1))) return st;
+    if ((st = gal_chol_factor(w->chol, b->K, 0, NULL)) || w->chol->negative_pivots)
+        return gal_error(GAL_EFAIL, "bundle statics: the equilibrium at the unstretched length %.9g m is not stable "
+                         "(%d negative pivots)", b->rod[0]->p.unstretched_length, w->chol->negative_pivots);
+    memcpy(w->g0, b->grad, (size_t)n * sizeof(double));
+    for (int r = 0; r < b->n; r++) gal_rod_set_unstretched_length(b->rod[r], L0);
+    if ((st = gal_bundle_eval(b, NULL, NULL, 0))) return st;
+    for (int j = 0; j < n; j++) w->g0[j] = b->grad[j] - w->g0[j];
+    if ((st = gal_chol_solve(w->chol, w->g0, w->d))) return st;
+    for (int j = 0; j < n; j++) w->d[j] = -w->d[j];
+    gal_bundle_step(b, b->state, w->d, 1.0, w->st);
+    memcpy(b->state, w->st, (size_t)b->nstate * sizeof(double));
+    return GAL_OK;
+}
+
 static int solve_length(newton_ws *w, const gal_catenary *cat, gal_statics_spec spec, double value,
                         int max_iter, double *res)
 {
@@ -89,8 +113,7 @@ static int solve_length(newton_ws *w, const gal_catenary *cat, gal_statics_spec 
         if (b->length_iterations++ >= max_iter)
             return gal_error(GAL_EFAIL, "bundle statics: the unstretched length iteration did not converge (off by %.3g)", fa);
         double L0b = L0a - fa / slope;
-        for (int r = 0; r < b->n; r++) gal_rod_set_unstretched_length(b->rod[r], L0b);
-        if ((st = newton(w, res))) return st;
+        if ((st = predict(w, L0b)) || (st = newton(w, res))) return st;
         double fb = misfit(b, spec, value);
         if (fb != fa) slope = (fb - fa) / (L0b - L0a);
         L0a = L0b, fa = fb;
