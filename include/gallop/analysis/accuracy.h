@@ -111,8 +111,9 @@ typedef struct gal_acc_point {
 typedef struct gal_acc_front {
     int n, cap;
     gal_acc_point *pt;
-    /* the reference: full model refined (elements x2, step /2) until no scored measure changes
-     * by more than a tenth of the tolerance, then Richardson-extrapolated */
+    /* the reference: full model refined (elements x2, step /2) until every scored measure's
+     * estimated error is below a tenth of the tolerance, Richardson-extrapolated where the order
+     * is known */
     int levels;                           /* refinements run (finest level = levels - 1) */
     int ref_elements[8];
     double ref_time_step[8];              /* s */
@@ -122,11 +123,15 @@ typedef struct gal_acc_front {
     double ref_error[GAL_ACC_NMEAS];      /* their estimated relative error: the finest level's
                                            * Richardson estimate, and in turbulent wind at least
                                            * its standard error over the seeds */
+    double ref_disc_error[GAL_ACC_NMEAS]; /* its discretization part alone (what the refinement
+                                           * stops on): Richardson's with the observed order where
+                                           * it is known (1 <= p <= 3), else the last change */
     double ref_change[GAL_ACC_NMEAS];     /* relative change over the last refinement */
     double ref_spread[GAL_ACC_NMEAS];     /* the finest level's standard error over the seeds */
-    double order[GAL_ACC_NMEAS];          /* observed order of the refinement (NaN: not enough levels) */
+    double order[GAL_ACC_NMEAS];          /* observed order of the refinement (NaN: fewer than 3
+                                           * levels, or changes that do not shrink) */
     int scored[GAL_ACC_NMEAS];            /* 1: the measure is scored (finite, above its floor) */
-    int converged;                        /* every scored change below tolerance / 10 */
+    int converged;                        /* every scored ref_disc_error below tolerance / 10 */
     char ref_note[256];
     int nseeds;
     double output_interval_s, steady_from_s, base_time_step_s;
