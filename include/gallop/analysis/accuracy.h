@@ -1,8 +1,8 @@
 /* accuracy.h: what accuracy costs in time (issue 7, DESIGN.md "Command line": gallop accuracy).
- * For one scene, each study sweeps one choice (mesh, reduced basis, time step, reduced tolerance,
- * physical effects), measures the error of every setting against a reference setting of the same
- * study and the wall time it took, and names the cheapest setting whose error is within the
- * tolerance. The scene itself is never changed: every setting runs on a copy. */
+ * For one scene, each study sweeps one choice (mesh, reduced basis, time step, physical effects),
+ * measures the error of every setting against a reference setting of the same study and the wall
+ * time it took, and names the cheapest setting whose error is within the tolerance.
+ * The scene itself is never changed: every setting runs on a copy. */
 #ifndef GALLOP_ACCURACY_H
 #define GALLOP_ACCURACY_H
 
@@ -16,7 +16,6 @@ typedef enum {
     GAL_ACC_ELEMENTS,  /* model.elements: statics + modes against a fine mesh */
     GAL_ACC_MODES,     /* reduced basis size against one full-model run */
     GAL_ACC_TIME_STEP, /* full model: simulation.time_step = T/10 .. T/80 against T/160 */
-    GAL_ACC_TOLERANCE, /* reduced model: simulation.tolerance 1e-4 .. 1e-9 against 1e-11 */
     GAL_ACC_EFFECTS,   /* reduced model with one effect off at a time against all on */
     GAL_ACC_FRONT,     /* every choice against a converged full-model reference: the Pareto front
                         * of error against wall time (accuracy_front.c; the default study) */
