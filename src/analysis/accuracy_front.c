@@ -271,6 +271,16 @@ int gal_acc_reference(acc_study *S, const gal_acc_config *base)
     }
     if (F->levels < 2) snprintf(F->ref_note, sizeof F->ref_note, "one level only: the reference error is unknown");
     extrapolate(S);
+    if (S->o->progress) { /* the reference's state before the long part of a study */
+        fprintf(stderr, "accuracy: front reference %s in %d levels; estimated error:",
+                F->converged ? "converged" : "NOT converged", F->levels);
+        for (int k = 0; k < GAL_ACC_NMEAS; k++)
+            if (F->scored[k]) {
+                fprintf(stderr, " %s %.2g%%", gal_acc_measure_names[k], 100 * F->ref_error[k]);
+                if (isfinite(F->order[k])) fprintf(stderr, " (order %.2g)", F->order[k]);
+            }
+        fprintf(stderr, "\n");
+    }
     if (!F->converged && !F->ref_note[0])
         snprintf(F->ref_note, sizeof F->ref_note, "not converged to a tenth of the tolerance in %d levels "
                  "(raise --set or the level count); the errors below include the reference's", F->levels);
