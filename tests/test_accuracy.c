@@ -3,8 +3,14 @@
  * first horizontal mode, f = 1/(2L) sqrt(H/m). The reference must converge, its extrapolated
  * frequency must meet string theory within its own estimated error (and a tenth of the
  * tolerance), the observed order of the refinement must be 2 (lumped-mass string and trapezoidal
- * step both second order), and every configuration's frequency error must match the closed form
- * (1 - (2N/pi) sin(pi/2N) seen through w -> (2/h) atan(w h / 2)) within a factor of 2. */
+ * step both second order), and every configuration's reported frequency error must match its true
+ * one within a factor of 2: for the full model, the closed form (1 - (2N/pi) sin(pi/2N) seen
+ * through w -> (2/h) atan(w h / 2)); for every configuration, reduced ones included, the error of
+ * the frequency it computed against string theory. (The closed form is not a reduced run's: where
+ * its Newton fails the reduced model halves the step and grows its basis, e.g. 16 elements at
+ * 0.05 s took 2633 steps, not 600, so it is more accurate than its label's step. Which reduced
+ * configurations the combined stage runs depends on measured wall times, so holding them to the
+ * closed form made the test depend on the machine's load.) */
 #include "check.h"
 #include "gallop.h"
 
@@ -58,16 +64,23 @@ static void test_string_front(void)
         for (int i = 0; i < F->n; i++) {
             const gal_acc_point *q = F->pt + i;
             if (q->failed[0] || q->c.effect_off >= 0) continue;
-            double t = true_error(q->c.elements, q->c.time_step), e = q->err[GAL_ACC_M_FREQUENCY];
+            double e = q->err[GAL_ACC_M_FREQUENCY], t = fabs(q->value[GAL_ACC_M_FREQUENCY] / fs - 1);
+            if (t >= 1e-3) CHECK(e > 0.5 * t && e < 2 * t, "%s: reported %g, true (string theory) %g", q->label, e, t);
+            if (q->c.reduced) continue;
+            t = true_error(q->c.elements, q->c.time_step);
             if (t < 1e-3) continue;
-            n++;
-            CHECK(e > 0.5 * t && e < 2 * t, "%s: reported %g, true %g", q->label, e, t);
+            n += strcmp(q->group, "combined") != 0;
+            CHECK(e > 0.5 * t && e < 2 * t, "%s: reported %g, true (closed form) %g", q->label, e, t);
         }
-        CHECK(n >= 8, "only %d configurations above the floor", n);
+        /* the reference's coarser levels and the one-at-a-time full choices above the floor (the
+         * combined ones, chosen by wall time, are checked above but not counted) */
+        CHECK(n >= 7, "only %d full-model configurations above the floor", n);
         CHECK(F->chosen >= 0 && F->checked, "no chosen configuration");
         if (F->chosen >= 0) {
             const gal_acc_point *c = F->pt + F->chosen;
-            CHECK(true_error(c->c.elements, c->c.time_step) <= o.tolerance, "chosen %s", c->label);
+            double t = fabs(c->value[GAL_ACC_M_FREQUENCY] / fs - 1);
+            CHECK(t <= o.tolerance, "chosen %s: true error %g", c->label, t);
+            if (!c->c.reduced) CHECK(true_error(c->c.elements, c->c.time_step) <= o.tolerance, "chosen %s", c->label);
             CHECK(F->check.error <= o.tolerance, "check run error %g", F->check.error);
         }
     }

@@ -216,6 +216,7 @@ line=$(scene sim_duration_short simulation "output_interval = 0.5")
 refused sim_duration_short "$tmp/sim_duration_short.ini" $((line + 1)) "duration = 10: too short to measure"
 key sim_rho_inf_huge        simulation "rho_inf = 2"
 key sim_tolerance_zero      simulation "tolerance = 0"
+key sim_tolerance_retired   simulation "tolerance = 1e-6" "simulation.time_step"
 key sim_unknown_key         simulation "integrator = euler"
 # ---- [output] and the file's syntax ----
 key output_dir_semicolon    output "directory = a;b" "directory"

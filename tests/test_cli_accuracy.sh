@@ -50,7 +50,7 @@ ls "$tmp/el" | grep -q tmp && bad "temporary files left behind" || ok "no tempor
 # wind; the full model is slow on coarse meshes) ----
 short=(--set simulation.duration=30 --set wind.speed=12 --set ice.attack_angle=20 --set span.horizontal_tension=25000
        --set conductor.damping_ratio=0.005)
-if "$GALLOP" accuracy data/scenes/iced_gallop.ini "${short[@]}" --study modes --study tolerance \
+if "$GALLOP" accuracy data/scenes/iced_gallop.ini "${short[@]}" --study modes --study time_step \
      --tolerance 0.05 -o "$tmp/dy" >"$tmp/out" 2>"$tmp/err"; then
   ok "dynamic studies exit 0"
 else
@@ -67,7 +67,7 @@ else
 fi
 c=$tmp/dy/accuracy.csv
 [ "$(head -n 1 "$c" 2>/dev/null)" = "$header" ] && ok "dynamic accuracy.csv header" || bad "dynamic header"
-for s in modes tolerance effects; do
+for s in modes time_step effects; do
   rows=$(awk -F, -v s="$s" 'NR > 1 && $1 == s' "$c" | wc -l)
   ch=$(awk -F, -v s="$s" 'NR > 1 && $1 == s && $6 == 1' "$c" | wc -l)
   [ "$rows" -ge 2 ] && ok "$s: $rows rows" || bad "$s: $rows rows"
@@ -90,10 +90,15 @@ for args in "--tolerance 0" "--tolerance 2" "--tolerance abc" "--study nosuch" "
   [ $rc -eq 2 ] && [ -s "$tmp/err" ] && ok "bad input '$args': exit 2 with a message" || bad "'$args': exit $rc: $(cat "$tmp/err")"
 done
 [ -e "$tmp/bad" ] && bad "bad input wrote output" || ok "bad input writes nothing"
+# the retired tolerance study (simulation.tolerance, read by no integrator since both take fixed steps)
+"$GALLOP" accuracy data/scenes/drake_300m.ini --study tolerance -o "$tmp/bad" >/dev/null 2>"$tmp/err"
+rc=$?
+[ $rc -eq 2 ] && grep -q "no longer a study" "$tmp/err" && grep -q "time_step" "$tmp/err" && [ ! -e "$tmp/bad" ] \
+  && ok "--study tolerance: exit 2 naming what replaced it" || bad "--study tolerance: exit $rc: $(cat "$tmp/err")"
 # a computation that fails: a sag without gravity has no equilibrium (input) -- and an unreachable
 # dynamic measure: too few samples for the spectra is a failed computation (exit 1)
 "$GALLOP" accuracy data/scenes/iced_gallop.ini --set simulation.duration=1 --set model.elements=20 \
-  --study tolerance -o "$tmp/f1" >/dev/null 2>"$tmp/err"
+  --study time_step -o "$tmp/f1" >/dev/null 2>"$tmp/err"
 rc=$?
 [ $rc -ne 0 ] && [ -s "$tmp/err" ] && ok "a run too short to measure: exit $rc with the reason" || bad "too short: exit $rc"
 echo "#summary $pass $fail"

@@ -50,17 +50,19 @@ fi
 c=$tmp/a/front.csv
 hdr='label,group,model,elements,modes,time_step_s,effect_off,error_frequency,error_vertical,error_horizontal,error_twist,error_tension,error_time_to_steady,error,wall_time_s,on_front,chosen'
 [ "$(head -n 1 "$c" 2>/dev/null)" = "$hdr" ] && ok "front.csv header" || bad "front.csv header: $(head -n 1 "$c" 2>/dev/null)"
-# the reported frequency error of every configuration against the closed form
+# the reported frequency error of every full-model configuration against the closed form (not of
+# a reduced one: it halves its step where its Newton fails; tests/test_accuracy.c holds those to
+# string theory); counted: the deterministic stages (the combined ones depend on wall times)
 awk -F, -v L=100 -v H=20000 -v m=1 'function atan(x) { return atan2(x, 1) }
-  NR > 1 && $7 == "" && $8 != "nan" && $8 != "inf" {
+  NR > 1 && $7 == "" && $3 == "full" && $8 != "nan" && $8 != "inf" {
     pi = atan2(0, -1); c = sqrt(H / m); w = pi * c / L; N = $4; h = $6
     wN = 2 * N * c / L * sin(pi / (2 * N)); wb = 2 / h * atan(wN * h / 2); t = 1 - wb / w
     if (t < 0) t = -t
     if (t < 1e-3) next                    # below what a 30 s spectrum resolves
-    n++; r = $8 / t
+    n += ($2 != "combined"); r = $8 / t
     if (r < 0.5 || r > 2) { bad++; printf "    %s: reported %.4g, true %.4g\n", $1, $8, t }
   }
-  END { printf "%d %d\n", n, bad; exit !(n >= 8 && bad == 0) }' "$c" >"$tmp/fq" \
+  END { printf "%d %d\n", n, bad; exit !(n >= 7 && bad == 0) }' "$c" >"$tmp/fq" \
   && ok "reported frequency errors within a factor 2 of the closed form ($(tail -n 1 "$tmp/fq" | cut -d' ' -f1) configurations)" \
   || bad "frequency errors against the closed form: $(cat "$tmp/fq")"
 # the element order is 2 and the time step's order is 2: halving both divides the error by ~4
@@ -81,11 +83,14 @@ ch, chk = f["chosen"], f["check"]
 if not ch or not chk: fail("no chosen configuration or no check")
 if not (chk["error"] <= E): fail("check run error %s > %g" % (chk["error"], E))
 if chk["label"] != ch["label"]: fail("check ran %s, chose %s" % (chk["label"], ch["label"]))
-# the chosen configuration's true frequency error
+# the chosen configuration's true frequency error: its frequency against string theory, and for
+# the full model the closed form of its mesh and step
+t = abs(ch["values"]["frequency"] / fs - 1)
+if t > E: fail("chosen %s: frequency %g Hz, %g off string theory > %g" % (ch["label"], ch["values"]["frequency"], t, E))
 lab = ch["label"].split(); N = int(lab[-2][2:]); h = float(lab[-1][2:])
 w = math.pi * math.sqrt(20000) / 100; wN = 2 * N * math.sqrt(20000) / 100 * math.sin(math.pi / (2 * N))
 t = abs(1 - 2 / h * math.atan(wN * h / 2) / w)
-if t > E: fail("chosen %s: true frequency error %g > %g" % (ch["label"], t, E))
+if lab[0] == "full" and t > E: fail("chosen %s: true frequency error %g > %g" % (ch["label"], t, E))
 # the cheapest within E: no point within E is cheaper
 for p in f["points"]:
     if p["group"] != "effect" and p["error"] is not None and p["error"] <= E and p["wall_time_s"] < ch["wall_time_s"]:

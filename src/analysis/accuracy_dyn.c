@@ -1,6 +1,6 @@
 /* accuracy_dyn.c: the dynamic studies of `gallop accuracy` (issue 7): the reduced basis against
- * one full-model run, the full model's time step, the reduced model's tolerance, the physical
- * effects; each setting is one run measured at mid-span. */
+ * one full-model run, the full model's time step, the physical effects; each setting is one run
+ * measured at mid-span. */
 #include "gallop/analysis/accuracy.h"
 #include "analysis/accuracy_int.h"
 #include "gallop/base/core.h"
@@ -107,17 +107,15 @@ int gal_acc_study_modes(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
     return GAL_OK;
 }
 
-/* a sweep of one setting on one shared set-up: full-model time steps or reduced tolerances */
-int gal_acc_study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, gal_acc_study which,
-                       double T)
+/* the full model's time step swept on one shared set-up */
+int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, double T)
 {
+    const gal_acc_study which = GAL_ACC_TIME_STEP;
     gal_acc_summary *S = &r->study[which];
     gal_scene s = *sc;
-    int full = which == GAL_ACC_TIME_STEP;
     static const int div[] = {10, 20, 40, 80, 160};               /* T / div */
-    static const double tol[] = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-11};
-    int nv = full ? 5 : 7;
-    if (full) s.simulation.output_interval = T / 10;  /* every step divides the sampling interval */
+    int nv = 5;
+    s.simulation.output_interval = T / 10;  /* every step divides the sampling interval */
     S->output_interval_s = s.simulation.output_interval;
     gal_sim_setup su;
     int st = gal_sim_setup_init(&su, &s, 1);
@@ -128,19 +126,17 @@ int gal_acc_study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
     /* from the finest setting down: the finest that runs is the reference (the requested one
      * unless it fails, which the summary then says), measured first for its steady window */
     for (int i = nv - 1; i >= 0; i--) {
-        if (full) s.simulation.time_step = T / div[i];
-        else s.simulation.tolerance = tol[i];
+        s.simulation.time_step = T / div[i];
         gal_sim_result res;
-        ok[i] = !gal_sim_run(&su, full ? GAL_MODEL_FULL : GAL_MODEL_REDUCED, &res) &&
+        ok[i] = !gal_sim_run(&su, GAL_MODEL_FULL, &res) &&
                 !dyn_measure(&res, ref < 0 ? -1 : d[ref].from, &d[i]);
         gal_sim_result_clear(&res);
         if (!ok[i]) {
             snprintf(why[i], sizeof why[i], "%s", gal_error_message());
             if (o->progress) fprintf(stderr, "accuracy: %s run %d failed: %s\n", gal_acc_study_names[which], i, gal_error_message());
             if (i == nv - 1)
-                snprintf(S->note, sizeof S->note, "the requested reference %s = %.3g failed (%s); the finest setting "
-                         "that ran is the reference", full ? "simulation.time_step" : "simulation.tolerance",
-                         full ? T / div[i] : tol[i], gal_error_message());
+                snprintf(S->note, sizeof S->note, "the requested reference simulation.time_step = %.3g failed (%s); "
+                         "the finest setting that ran is the reference", T / div[i], gal_error_message());
             continue;
         }
         if (ref < 0) ref = i, S->steady_from_s = d[i].from;
@@ -152,8 +148,7 @@ int gal_acc_study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
     }
     gal_sim_setup_clear(&su);
     for (int i = 0; i < nv; i++) {
-        gal_acc_row *w = full ? gal_acc_row_add(r, which, "simulation.time_step", "%.6g", T / div[i])
-                              : gal_acc_row_add(r, which, "simulation.tolerance", "%.0e", tol[i]);
+        gal_acc_row *w = gal_acc_row_add(r, which, "simulation.time_step", "%.6g", T / div[i]);
         if (!w) return gal_error(GAL_ENOMEM, "out of memory");
         if (ok[i]) dyn_fill(w, &d[i], &d[ref]);
         else w->error = INFINITY, snprintf(w->failed, sizeof w->failed, "%s", why[i]);

@@ -1,9 +1,9 @@
 /* accuracy_front.c: the front study of `gallop accuracy` (issue 20): one configuration's runs and
  * measures (every seed in turbulent wind), the converged reference (the full model refined in
- * elements and time step until no measure changes by more than a tenth of the tolerance, then
- * Richardson-extrapolated: M* = M_K + (M_K - M_K-1) / (2^p - 1), p the observed order of the
- * refinement, 2 when it cannot be observed: the generalized-alpha step and the lumped-mass string
- * are both second order) and the study's constants (output interval, base step). */
+ * elements and time step until every measure's estimated error is below a tenth of the tolerance:
+ * Richardson's, M* = M_K + (M_K - M_K-1) / (2^p - 1), with p the order observed over the last three
+ * levels where it is known, else the last change) and the study's constants (output interval,
+ * base step). */
 #include "gallop/analysis/accuracy.h"
 #include "analysis/accuracy_front_int.h"
 #include "analysis/accuracy_int.h"
@@ -170,49 +170,63 @@ static void choose_scored(acc_study *S)
     }
 }
 
-/* the change of each scored measure over the last refinement, and whether all are below tol/10
+/* Richardson's estimate of measure k from levels 0..K: the observed order (NaN when it cannot be
+ * observed: fewer than 3 levels, or changes that do not shrink), the reference value and its
+ * estimated relative error. The order is "known" when observed within [ORDER_MIN, ORDER_MAX] (the
+ * generalized-alpha step and the rod's mesh are both second order; a mixture of the two, or an
+ * amplitude that is a nonlinear function of them, shows 1.5-2.3): then M* = M_K + d / (2^p - 1),
+ * d = M_K - M_K-1, and the estimated error is |d| / (2^p - 1), the finest level's own (the
+ * extrapolated value is better by an amount no three levels can measure). Without a known order
+ * there is no extrapolation: the finest level, with the last change as its estimated error. */
+#define ORDER_MIN 1.0
+#define ORDER_MAX 3.0
+static void richardson(const gal_acc_front *F, int k, int K, double *order, double *value, double *err)
+{
+    const double *m = &F->ref_level_value[0][k];
+#define LV(i) m[(size_t)(i) * GAL_ACC_NMEAS]
+    *order = NAN;
+    if (K < 1) { *value = LV(0), *err = NAN; return; }
+    double d1 = LV(K) - LV(K - 1);
+    *value = LV(K), *err = gal_acc_relerr(LV(K - 1), LV(K));
+    if (k == GAL_ACC_M_STEADY) return; /* no order: the finest run as it is */
+    if (K >= 2) {
+        double q = (LV(K - 1) - LV(K - 2)) / d1;
+        if (isfinite(q) && q > 1) *order = log2(q);
+    }
+    if (!(*order >= ORDER_MIN && *order <= ORDER_MAX)) return;
+    double e = d1 / (pow(2, *order) - 1);
+    *value = LV(K) + e;
+    *err = *value != 0 ? fabs(e / *value) : NAN;
+#undef LV
+}
+
+/* the change of each scored measure over the last refinement, and whether every estimated error
+ * (Richardson with the observed order where it is known, else the last change) is below tol/10
  * (the time to steady galloping, a threshold crossing with no order, is compared directly and
- * does not hold the refinement back) */
+ * does not hold the refinement back; in turbulent wind the seeds' spread does not either: every
+ * configuration runs on the same seeds) */
 static int level_converged(acc_study *S, int K)
 {
     gal_acc_front *F = S->F;
     int ok = 1;
     for (int k = 0; k < GAL_ACC_NMEAS; k++) {
+        double p, x, e;
         F->ref_change[k] = gal_acc_relerr(F->ref_level_value[K - 1][k], F->ref_level_value[K][k]);
-        if (F->scored[k] && k != GAL_ACC_M_STEADY && !(F->ref_change[k] < 0.1 * S->o->tolerance)) ok = 0;
+        richardson(F, k, K, &p, &x, &e);
+        if (F->scored[k] && k != GAL_ACC_M_STEADY && !(e < 0.1 * S->o->tolerance)) ok = 0;
     }
     return ok;
 }
 
-/* Richardson over the last levels: the reference values and their estimated errors */
+/* the reference values, their observed orders and estimated errors (in turbulent wind at least
+ * the seeds' standard error) */
 static void extrapolate(acc_study *S)
 {
     gal_acc_front *F = S->F;
-    int K = F->levels - 1;
     for (int k = 0; k < GAL_ACC_NMEAS; k++) {
-        const double *m = &F->ref_level_value[0][k];
-#define LV(i) m[(size_t)(i) * GAL_ACC_NMEAS]
-        F->order[k] = NAN;
-        if (K < 1) { F->ref_value[k] = LV(0), F->ref_error[k] = NAN; continue; }
-        double d1 = LV(K) - LV(K - 1);
-        if (k == GAL_ACC_M_STEADY) { /* no order: the finest run as it is */
-            F->ref_value[k] = LV(K), F->ref_error[k] = gal_acc_relerr(LV(K - 1), LV(K));
-            continue;
-        }
-        double p = 2;
-        if (K >= 2) {
-            double d0 = LV(K - 1) - LV(K - 2), q = d0 / d1;
-            if (isfinite(q) && q > 1) F->order[k] = log2(q);
-            if (F->order[k] >= 1 && F->order[k] <= 4) p = F->order[k];
-        }
-        double x = LV(K) + d1 / (pow(2, p) - 1);
-        F->ref_value[k] = x;
-        /* the estimated error: the finest run's own, |M_K - M*| (conservative: the extrapolated
-         * value is better than the finest run, by an amount that cannot be measured here) */
-        double e = fabs(d1 / (pow(2, p) - 1));
-        F->ref_error[k] = x != 0 ? e / fabs(x) : NAN;
+        richardson(F, k, F->levels - 1, &F->order[k], &F->ref_value[k], &F->ref_disc_error[k]);
+        F->ref_error[k] = F->ref_disc_error[k];
         if (isfinite(F->ref_spread[k])) F->ref_error[k] = fmax(F->ref_error[k], F->ref_spread[k]);
-#undef LV
     }
 }
 
@@ -257,6 +271,16 @@ int gal_acc_reference(acc_study *S, const gal_acc_config *base)
     }
     if (F->levels < 2) snprintf(F->ref_note, sizeof F->ref_note, "one level only: the reference error is unknown");
     extrapolate(S);
+    if (S->o->progress) { /* the reference's state before the long part of a study */
+        fprintf(stderr, "accuracy: front reference %s in %d levels; estimated error:",
+                F->converged ? "converged" : "NOT converged", F->levels);
+        for (int k = 0; k < GAL_ACC_NMEAS; k++)
+            if (F->scored[k]) {
+                fprintf(stderr, " %s %.2g%%", gal_acc_measure_names[k], 100 * F->ref_error[k]);
+                if (isfinite(F->order[k])) fprintf(stderr, " (order %.2g)", F->order[k]);
+            }
+        fprintf(stderr, "\n");
+    }
     if (!F->converged && !F->ref_note[0])
         snprintf(F->ref_note, sizeof F->ref_note, "not converged to a tenth of the tolerance in %d levels "
                  "(raise --set or the level count); the errors below include the reference's", F->levels);

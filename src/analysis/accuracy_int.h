@@ -17,9 +17,8 @@ void gal_acc_progress(const gal_acc_opts *o, const gal_acc_row *w);
 
 /* the dynamic studies (accuracy_dyn.c); sc has the sampling of the scene's own run */
 int gal_acc_study_modes(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);
-/* full-model time steps T/10 .. T/160 or reduced tolerances, T the shortest selected period, s */
-int gal_acc_study_sweep(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, gal_acc_study which,
-                        double T);
+/* full-model time steps T/10 .. T/160, T the shortest selected period, s */
+int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, double T);
 /* the front study (accuracy_front.c, accuracy_pareto.c): r->front */
 int gal_acc_study_front(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);
 int gal_acc_study_effects(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);

@@ -28,6 +28,10 @@ static int add_studies(const char *list, unsigned *mask)
     strcpy(buf, list);
     for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         int k = -1;
+        if (!strcmp(t, "tolerance"))
+            return bad("--study tolerance: no longer a study: it swept simulation.tolerance, which no integrator "
+                       "reads since both models take fixed steps (the key is refused too); what replaced it: "
+                       "the front study (the default) and --study time_step measure the error of the step", NULL);
         for (int s = 0; s < GAL_ACC_NSTUDY; s++)
             if (!strcmp(t, gal_acc_study_names[s])) k = s;
         if (k < 0) return bad("--study: unknown study", t);

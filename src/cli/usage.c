@@ -35,7 +35,7 @@ const gal_cli_command gal_cli_commands[] = {
      "what accuracy costs in time: every choice against a converged reference, the Pareto front",
      "writes DIR/accuracy.csv, front.csv and summary.json; a table on stdout\n",
      {{"study", 0, "NAME[,NAME...]", 1,
-       "run these studies: front (default), or the older one-at-a-time elements, modes, time_step, tolerance, "
+       "run these studies: front (default), or the older one-at-a-time elements, modes, time_step, "
        "effects (repeatable)"},
       {"tolerance", 0, "E", 0, "relative error the chosen setting must meet, in (0, 1) (default: 0.01)"},
       {"budget", 0, "SECONDS", 0, "front: wall-time limit of the study, spent where the front is least known"},

@@ -72,9 +72,10 @@ static void json_reference(gal_json *j, const gal_acc_front *F)
         gal_json_kv_int(j, "elements", F->ref_elements[F->levels - 1]);
         gal_json_kv_num(j, "time_step_s", F->ref_time_step[F->levels - 1]);
     }
-    static const char *const what[4] = {"values", "estimated_error", "last_change", "observed_order"};
-    const double *arr[4] = {F->ref_value, F->ref_error, F->ref_change, F->order};
-    for (int a = 0; a < 4; a++) {
+    static const char *const what[5] = {"values", "estimated_error", "discretization_error", "last_change",
+                                        "observed_order"};
+    const double *arr[5] = {F->ref_value, F->ref_error, F->ref_disc_error, F->ref_change, F->order};
+    for (int a = 0; a < 5; a++) {
         gal_json_key(j, what[a]);
         gal_json_obj_begin(j);
         for (int k = 0; k < GAL_ACC_NMEAS; k++)
@@ -142,7 +143,10 @@ void gal_acc_front_print(FILE *fp, const gal_acc_result *r)
             F->levels, F->levels ? F->ref_elements[F->levels - 1] : 0,
             F->levels ? F->ref_time_step[F->levels - 1] : NAN, F->converged ? "converged" : "NOT converged");
     for (int k = 0; k < GAL_ACC_NMEAS; k++)
-        if (F->scored[k]) fprintf(fp, " %s %.2g%%", gal_acc_measure_names[k], 100 * F->ref_error[k]);
+        if (F->scored[k]) {
+            fprintf(fp, " %s %.2g%%", gal_acc_measure_names[k], 100 * F->ref_error[k]);
+            if (isfinite(F->order[k]) && k != GAL_ACC_M_STEADY) fprintf(fp, " (order %.2g)", F->order[k]);
+        }
     fprintf(fp, "\n");
     if (F->ref_note[0]) fprintf(fp, "reference note: %s\n", F->ref_note);
     if (F->chosen >= 0 && F->checked)

@@ -117,7 +117,6 @@ const keydef scn_keys[K_COUNT] = {
     NUM("simulation", "output_interval", simulation.output_interval, 0, 0, 10, 0, "s, trace sampling; 0 = chosen"),
     NUM("simulation", "rho_inf", simulation.rho_inf, 0, 0, 1, 0,
         "-, full model: spectral radius at infinite frequency (1 = no numerical dissipation)"),
-    NUM("simulation", "tolerance", simulation.tolerance, 0, 1, 0.1, 0, "-, reduced model: relative error per step"),
     {"simulation", "start", T_ENUM, 0, 0, 0, 0, 0, 1.0,
      "rest | mean_wind (rest: the wind ramps in over wind_ramp; mean_wind: from the equilibrium under the mean wind)",
      scn_start_names},
@@ -146,12 +145,23 @@ const keydef scn_keys[K_COUNT] = {
      scn_bundle_model_names},
 };
 
-/* Keys that no longer apply, refused (exit 2, FILE:LINE) naming what replaced them. */
+/* Keys that no longer apply, refused (exit 2, FILE:LINE): why, and what replaced them. */
+#define REDUCED_REPLACEMENT                                                                                       \
+    "the reduced model recomputes its coupling from the rod at the current state (no fitted range) and checks " \
+    "itself: remove the line; what replaced it: model.residual_tolerance (its self-check's largest residual), "  \
+    "model.on_invalid = stop | warn, and the basis keys model.modes_vertical, model.modes_horizontal, "           \
+    "model.modes_torsional"
 static const struct {
     const char *sec, *key, *why;
 } retired[] = {
-    {"model", "identification_amplitude", "the identified reduced model whose fit it ranged was removed (issue 13)"},
-    {"model", "identification_twist", "the identified reduced model whose fit it ranged was removed (issue 13)"},
+    {"model", "identification_amplitude",
+     "the identified reduced model whose fit it ranged was removed (issue 13); " REDUCED_REPLACEMENT},
+    {"model", "identification_twist",
+     "the identified reduced model whose fit it ranged was removed (issue 13); " REDUCED_REPLACEMENT},
+    {"simulation", "tolerance",
+     "the adaptive reduced integrator whose error per step it set was removed (issue 13): both models take "
+     "fixed steps; remove the line; what replaced it: simulation.time_step (s, the step of both models; its "
+     "error against a converged reference is measured by gallop accuracy's front study)"},
 };
 
 const char *scn_retired_key(const char *sec, const char *key)

@@ -50,8 +50,7 @@ static int handler(void *user, const char *section, const char *name, const char
     int k = scn_find_key(section, name);
     const char *why = k < 0 ? scn_retired_key(section, name) : NULL;
     if (why)
-        return scn_fail(ps, GAL_EINPUT, ps->line, "[%s] %s = %s: no longer a key: %s; %s", ss, sn, sv, why,
-                        SCN_RETIRED_REPLACEMENT);
+        return scn_fail(ps, GAL_EINPUT, ps->line, "[%s] %s = %s: no longer a key: %s", ss, sn, sv, why);
     if (k < 0)
         return scn_fail(ps, GAL_EINPUT, ps->line, "[%s] %s = %s: unknown key; allowed: %s", ss, sn,
                     sv, scn_key_list(section, list, sizeof list));
@@ -181,7 +180,6 @@ static void defaults(gal_scene *sc)
     sc->simulation.wind_reverse_time = 0;
     sc->simulation.output_interval = 0;
     sc->simulation.rho_inf = 0.9;
-    sc->simulation.tolerance = 1e-6;
     sc->stability.speed_min = 0.5; /* analysis/onset.h's GAL_ONSET_SPEED_MIN, _MAX, _STEP */
     sc->stability.speed_max = 20;
     sc->stability.speed_step = 0.25;
@@ -229,8 +227,8 @@ static int apply_override(pstate *ps, const char *o)
     int k = scn_find_key(sec, key);
     const char *why = k < 0 ? scn_retired_key(sec, key) : NULL;
     if (why)
-        return scn_fail(ps, GAL_EINPUT, -1, "[%s] %s = %s: no longer a key: %s; %s", ss, sk,
-                        scn_show(val, sv, sizeof sv), why, SCN_RETIRED_REPLACEMENT);
+        return scn_fail(ps, GAL_EINPUT, -1, "[%s] %s = %s: no longer a key: %s", ss, sk,
+                        scn_show(val, sv, sizeof sv), why);
     if (k < 0)
         return scn_fail(ps, GAL_EINPUT, -1, "[%s] %s = %s: unknown key; allowed: %s", ss, sk,
                     scn_show(val, sv, sizeof sv), scn_key_list(sec, list, sizeof list));

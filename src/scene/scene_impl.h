@@ -25,7 +25,7 @@ enum {
     K_HEIGHT, K_TERRAIN, K_Z0, K_VB, K_LSCALE, K_VTURB, K_VCOH, K_VINTENS, K_VLSCALE,
     K_FX0, K_FXLAST = K_FX0 + GAL_FX_COUNT - 1,
     K_ELEM, K_MVERT, K_MHOR, K_MTOR, K_REDUCED, K_RESTOL, K_ONINV,
-    K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_TOL, K_START,
+    K_DUR, K_DT, K_PROBES, K_RAMP, K_REVERSE, K_OUTDT, K_RHOINF, K_START,
     K_SPMIN, K_SPMAX, K_SPSTEP,
     K_DIR, K_NEIGHBOURS,
     K_BSUB, K_BSEP, K_BSPACERS, K_BORIENT, K_BSMASS, K_BSINERTIA, K_BWAKE, K_BMODEL, K_COUNT
@@ -53,14 +53,8 @@ extern const char *const scn_onoff_names[];
 extern const char *const scn_bundle_model_names[];
 
 const char *scn_key_name(int k);
-/* A key that no longer applies: why (what removed it), else NULL; the reader refuses it with
- * SCN_RETIRED_REPLACEMENT, what replaced it. */
+/* A key that no longer applies: why (what removed it) and what replaced it, else NULL. */
 const char *scn_retired_key(const char *sec, const char *key);
-#define SCN_RETIRED_REPLACEMENT                                                                                   \
-    "the reduced model recomputes its coupling from the rod at the current state (no fitted range) and checks " \
-    "itself: remove the line; what replaced it: model.residual_tolerance (its self-check's largest residual), "  \
-    "model.on_invalid = stop | warn, and the basis keys model.modes_vertical, model.modes_horizontal, "           \
-    "model.modes_torsional"
 int scn_find_section(const char *s);
 int scn_find_key(const char *sec, const char *key);
 /* "length, height_difference, ..." for a section */

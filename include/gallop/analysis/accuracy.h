@@ -1,8 +1,8 @@
 /* accuracy.h: what accuracy costs in time (issue 7, DESIGN.md "Command line": gallop accuracy).
- * For one scene, each study sweeps one choice (mesh, reduced basis, time step, reduced tolerance,
- * physical effects), measures the error of every setting against a reference setting of the same
- * study and the wall time it took, and names the cheapest setting whose error is within the
- * tolerance. The scene itself is never changed: every setting runs on a copy. */
+ * For one scene, each study sweeps one choice (mesh, reduced basis, time step, physical effects),
+ * measures the error of every setting against a reference setting of the same study and the wall
+ * time it took, and names the cheapest setting whose error is within the tolerance.
+ * The scene itself is never changed: every setting runs on a copy. */
 #ifndef GALLOP_ACCURACY_H
 #define GALLOP_ACCURACY_H
 
@@ -16,7 +16,6 @@ typedef enum {
     GAL_ACC_ELEMENTS,  /* model.elements: statics + modes against a fine mesh */
     GAL_ACC_MODES,     /* reduced basis size against one full-model run */
     GAL_ACC_TIME_STEP, /* full model: simulation.time_step = T/10 .. T/80 against T/160 */
-    GAL_ACC_TOLERANCE, /* reduced model: simulation.tolerance 1e-4 .. 1e-9 against 1e-11 */
     GAL_ACC_EFFECTS,   /* reduced model with one effect off at a time against all on */
     GAL_ACC_FRONT,     /* every choice against a converged full-model reference: the Pareto front
                         * of error against wall time (accuracy_front.c; the default study) */
@@ -111,8 +110,9 @@ typedef struct gal_acc_point {
 typedef struct gal_acc_front {
     int n, cap;
     gal_acc_point *pt;
-    /* the reference: full model refined (elements x2, step /2) until no scored measure changes
-     * by more than a tenth of the tolerance, then Richardson-extrapolated */
+    /* the reference: full model refined (elements x2, step /2) until every scored measure's
+     * estimated error is below a tenth of the tolerance, Richardson-extrapolated where the order
+     * is known */
     int levels;                           /* refinements run (finest level = levels - 1) */
     int ref_elements[8];
     double ref_time_step[8];              /* s */
@@ -122,11 +122,15 @@ typedef struct gal_acc_front {
     double ref_error[GAL_ACC_NMEAS];      /* their estimated relative error: the finest level's
                                            * Richardson estimate, and in turbulent wind at least
                                            * its standard error over the seeds */
+    double ref_disc_error[GAL_ACC_NMEAS]; /* its discretization part alone (what the refinement
+                                           * stops on): Richardson's with the observed order where
+                                           * it is known (1 <= p <= 3), else the last change */
     double ref_change[GAL_ACC_NMEAS];     /* relative change over the last refinement */
     double ref_spread[GAL_ACC_NMEAS];     /* the finest level's standard error over the seeds */
-    double order[GAL_ACC_NMEAS];          /* observed order of the refinement (NaN: not enough levels) */
+    double order[GAL_ACC_NMEAS];          /* observed order of the refinement (NaN: fewer than 3
+                                           * levels, or changes that do not shrink) */
     int scored[GAL_ACC_NMEAS];            /* 1: the measure is scored (finite, above its floor) */
-    int converged;                        /* every scored change below tolerance / 10 */
+    int converged;                        /* every scored ref_disc_error below tolerance / 10 */
     char ref_note[256];
     int nseeds;
     double output_interval_s, steady_from_s, base_time_step_s;

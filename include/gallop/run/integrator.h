@@ -25,7 +25,6 @@ typedef struct gal_run_opts {
     double time_step;        /* s, full model; 0: chosen from the highest selected mode */
     double output_interval;  /* s; 0: chosen */
     double rho_inf;          /* -, full model's numerical dissipation (1 = none) */
-    double tolerance;        /* -, simulation.tolerance (no integrator reads it since issue 13) */
 } gal_run_opts;
 
 /* What an integrator counts. */
