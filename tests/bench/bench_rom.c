@@ -1,9 +1,13 @@
 /* bench_rom.c: the recomputed reduced model (rom.h) against the full model on the spans of
- * tests/rom/ (or the scenes given): the same set-up, wind and steady window; dominant frequency,
+ * tests/rom/ (or the scenes given): the same set-up, wind and steady window (the full run's, at
+ * most its last half: some limit cycles settle slowly); dominant frequency,
  * peak-to-peak amplitudes, largest support tension, residual check, and speed. Usage:
  *   bench_rom [--derivatives 0|1] [--manifold 0|1|2] [--h H] [--tolerance T] [--policy 1|2|3] [--relax 0|1] [--seeds N]
  *             [--spread] [--set key=value]... [SCENE...]   (default: every tests/rom scene)
- * Steady wind: peak-to-peak; turbulent wind: RMS over the window, mean of N seeds (default 3).
+ * Steady wind: peak-to-peak; turbulent wind: RMS over the window, mean of N seeds (default 3); a
+ * scene whose header says "statistics over perturbed runs" (an irregular, not periodic, galloping):
+ * RMS over the window, mean of N runs with the wind ramp 0, 1, ... s longer. There the full model's
+ * own spread is printed as the yardstick: the standard error of its mean over the runs, relative.
  * --spread: the full model again with the wind ramp 1 s longer, how far its own figures move.
  * Prints one ROW| line per scene and BENCH| lines (make bench) with the medians. */
 #include <glob.h>
@@ -69,6 +73,8 @@ static int pair(const char *path, const char *const *ov, int nov, int deriv, gal
     if (!sf && !sr) {
         int k = gal_sim_mid_probe(&rf);
         gal_sim_measure(&rf, k, -1, &p->mf);
+        double half = 0.5 * rf.time[rf.nsamples - 1]; /* the steady window: at most the last half */
+        if (p->mf.steady_from_s < half) gal_sim_measure(&rf, k, half, &p->mf);
         gal_sim_measure(&rr, k, p->mf.steady_from_s, &p->mr);
         p->wfull = rf.wall_time_s, p->wrom = rr.wall_time_s;
     }
@@ -79,6 +85,27 @@ static int pair(const char *path, const char *const *ov, int nov, int deriv, gal
 }
 
 static int nseeds = 3, spread = 0;
+
+/* 1 when the scene's header comment says "statistics over perturbed runs" */
+static int wants_statistics(const char *path)
+{
+    FILE *fp = fopen(path, "r");
+    char line[256];
+    int yes = 0;
+    while (fp && fgets(line, sizeof line, fp) && line[0] == ';')
+        if (strstr(line, "statistics over perturbed runs")) yes = 1;
+    if (fp) fclose(fp);
+    return yes;
+}
+
+/* relative standard error of the mean of x[0..n-1] */
+static double sem_rel(const double *x, int n)
+{
+    double m = 0, v = 0;
+    for (int k = 0; k < n; k++) m += x[k] / n;
+    for (int k = 0; k < n; k++) v += (x[k] - m) * (x[k] - m) / (n > 1 ? n - 1 : 1);
+    return n > 1 ? sqrt(v / n) / fmax(fabs(m), 1e-300) : NAN;
+}
 
 /* The full model again with the wind ramp 1 s longer (steady wind): how far its own figures move
  * (largest of the relative f, v, h, T differences; twist apart, deg). */
@@ -114,26 +141,30 @@ static void full_spread(const char *path, const char *const *ov0, int nov0, cons
 static int one(const char *path, const char *const *ov0, int nov0, int deriv, double *speed, double *whole)
 {
     const char *ov[40];
-    char seedkv[32];
+    char seedkv[48];
     int nov = nov0;
     memcpy(ov, ov0, (size_t)nov0 * sizeof *ov);
     gal_scene sc;
     if (gal_scene_load(&sc, path, ov, nov, NULL)) { printf("%s: %s\n", path, gal_error_message()); return 1; }
-    int turb = sc.wind.turbulence != GAL_TURB_NONE, runs = turb ? nseeds : 1;
+    int turb = sc.wind.turbulence != GAL_TURB_NONE, stat = turb || wants_statistics(path);
+    int runs = stat ? (nseeds < 16 ? nseeds : 16) : 1;
+    double ramp0 = sc.simulation.wind_ramp, own[4][16] = {{0}}; /* the full model's per-run f, v, h, T */
     double f[2] = {0}, a[2][4] = {{0}}, T[2] = {0}, tfull = 0, trom = 0, wf = 0, wr = 0, rmax = 0, fam[4] = {0};
     int basis = 0, basis0 = 0, growths = 0;
     double sp = NAN, spt = NAN;
-    if (turb) ov[nov++] = seedkv;
+    if (stat) ov[nov++] = seedkv;
     for (int k = 0; k < runs; k++) {
-        snprintf(seedkv, sizeof seedkv, "wind.seed=%d", k + 1);
+        if (turb) snprintf(seedkv, sizeof seedkv, "wind.seed=%d", k + 1);
+        else snprintf(seedkv, sizeof seedkv, "simulation.wind_ramp=%g", ramp0 + k);
         pair_result p;
         if (pair(path, ov, nov, deriv, &sc, &p)) return 1;
         const gal_sim_measures *m[2] = {&p.mr, &p.mf};
-        if (spread && !turb) full_spread(path, ov, nov, &p.mf, &sp, &spt);
+        if (spread && !stat) full_spread(path, ov, nov, &p.mf, &sp, &spt);
         for (int j = 0; j < 2; j++) {
             f[j] += m[j]->frequency_hz[1] / runs, T[j] += m[j]->tension_max_steady / runs;
-            for (int c = 0; c < 4; c++) a[j][c] += (turb ? m[j]->rms[c] : m[j]->peak_to_peak[c]) / runs;
+            for (int c = 0; c < 4; c++) a[j][c] += (stat ? m[j]->rms[c] : m[j]->peak_to_peak[c]) / runs;
         }
+        own[0][k] = p.mf.frequency_hz[1], own[1][k] = p.mf.rms[1], own[2][k] = p.mf.rms[0], own[3][k] = p.mf.tension_max_steady;
         tfull += p.tset + p.tfull, trom += p.tset + p.trom, wf += p.wfull, wr += p.wrom;
         rmax = fmax(rmax, p.info.residual_max);
         for (int c = 0; c < 4; c++) fam[c] = fmax(fam[c], p.info.residual_family[c]);
@@ -147,13 +178,20 @@ static int one(const char *path, const char *const *ov0, int nov0, int deriv, do
     double eh = fabs(a[0][0] - a[1][0]) / fmax(a[1][0], 0.4 * a[1][1]); /* 2% of vertical = 5% of 0.4 v */
     double et = fabs(a[0][3] - a[1][3]);
     int ok = ef <= 0.01 && ev <= 0.05 && eh <= 0.05 && (et <= 3 || et <= 0.05 * a[1][3]) && eT <= 0.05;
+    if (stat) { /* the yardstick: the standard error of the full model's mean over the runs */
+        sp = 0;
+        for (int c = 0; c < 4; c++) sp = fmax(sp, sem_rel(own[c], runs));
+    }
     *speed = wf / wr, *whole = tfull / trom;
     printf("ROW|%s|n=%d r=%d->%d (%d growths)|%s|f %.4f/%.4f Hz (%.2f%%)|v %.3f/%.3f m (%.1f%%)|h %.3f/%.3f m (%.1f%%)|"
            "tw %.1f/%.1f deg (%.1f deg)|T %.0f/%.0f N (%.1f%%)|res %.3g [v %.2g h %.2g t %.2g a %.2g]|%s|"
-           "full vs full (ramp + 1 s) %.1f%%, %.1f deg|x%.1f step, x%.1f whole\n",
-           path, sc.model.elements, basis0, basis, growths, turb ? "RMS, mean of the seeds" : "p-p", f[0], f[1],
+           "%s %.1f%%, %.1f deg|x%.1f step, x%.1f whole\n",
+           path, sc.model.elements, basis0, basis, growths,
+           turb ? "RMS, mean of the seeds" : stat ? "RMS, mean of the ramps" : "p-p", f[0], f[1],
            100 * ef, a[0][1], a[1][1], 100 * ev, a[0][0], a[1][0], 100 * eh, a[0][3], a[1][3], et, T[0], T[1], 100 * eT,
-           rmax, fam[0], fam[1], fam[2], fam[3], ok ? "within" : "OUTSIDE", 100 * sp, spt, *speed, *whole);
+           rmax, fam[0], fam[1], fam[2], fam[3], ok ? "within" : "OUTSIDE",
+           stat ? "full's own spread (s.e. of its mean over the runs)" : "full vs full (ramp + 1 s)", 100 * sp, spt,
+           *speed, *whole);
     fflush(stdout);
     return 0;
 }
