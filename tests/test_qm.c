@@ -1,13 +1,15 @@
 /* test_qm.c: the quadratic manifold's inertia (qm.h): the reduced mass M(x) and the convective
  * term against P(x)^T M (P a + Theta(v, v)) formed over the full dofs, the kinetic energy
  * |P v|_M^2 / 2, and the step's inertia term (momentum form with a discrete gradient) whose work
- * over x1 - x0 is exactly T1 - T0. */
+ * over x1 - x0 is exactly T1 - T0; the static vectors: the static response to a mean load in the
+ * manifold's linear span, M-orthonormal to the modes. */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/modes/modes.h"
 #include "gallop/reduced/rom.h"
 #include "gallop/statics/statics.h"
 #include "reduced/qm.h"
+#include "base/chol.h"
 
 static const gal_rod_params sagged = {.length = 150, .elements = 24, .EA = 3e7, .EI = 30, .GJ = 200, .mass = 1.6,
                                       .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
@@ -19,7 +21,7 @@ typedef struct {
     gal_rom *m;
 } span;
 
-static int make(span *s)
+static int make_loaded(span *s, const double *mean_load, int static_vectors)
 {
     memset(s, 0, sizeof *s);
     int want[GAL_FAMILY_COUNT] = {3, 2, 1, 0};
@@ -31,11 +33,13 @@ static int make(span *s)
         if (s->md.mode[k].selected) s->sel[s->r++] = k;
     gal_rom_opts o;
     gal_rom_default_opts(&o);
-    o.manifold = 1, o.hyper = 0;
+    o.manifold = 1, o.hyper = 0, o.mean_load = mean_load, o.static_vectors = static_vectors;
     s->m = gal_rom_alloc(s->eq.rod, s->eq.q, &s->md, s->sel, s->r, &o, NULL);
     CHECK(s->m != NULL && s->m->qm && s->m->qm->inertia, "%s", gal_error_message());
     return s->m == NULL;
 }
+
+static int make(span *s) { return make_loaded(s, NULL, 0); }
 
 static void clear(span *s)
 {
@@ -124,9 +128,61 @@ static void test_step_work(void)
     clear(&s);
 }
 
+/* A mean load (out-of-plane drag, in-plane lift, twist moment: uneven along the span) whose static
+ * response K0^-1 F, and with static_vectors = 2 each part's, lies in the span of V to round-off;
+ * the added columns M-orthonormal to the modes and to each other. */
+static void test_static_vectors(void)
+{
+    for (int sv = 1; sv <= 2; sv++) {
+        span s0;
+        if (make(&s0)) return;
+        int nsel = s0.r, nq = s0.m->nq, n = s0.m->ndof, nn = s0.m->rod->nn;
+        clear(&s0);
+        double *F = calloc(nq, sizeof(double)), *f = calloc(nq, sizeof(double)), *b = malloc(n * sizeof(double));
+        double *u = malloc(n * sizeof(double)), *Mu = malloc(n * sizeof(double));
+        for (int i = 0; i < nn; i++) F[3 * i + 1] = 8.0 + 3 * sin(0.3 * i), F[3 * i + 2] = 2.0 * cos(0.2 * i);
+        for (int j = 0; 3 * nn + j < nq; j++) F[3 * nn + j] = 0.4 + 0.1 * j;
+        span s;
+        if (make_loaded(&s, F, sv)) return;
+        gal_rom *m = s.m;
+        CHECK(m->r == nsel + (sv == 2 ? 3 : 1) && m->nmodes == m->r && m->qm->nstatic == m->r - nsel,
+              "basis %d (modes %d, static %d)", m->r, nsel, m->qm->nstatic);
+        for (int p = 0; p < (sv == 2 ? 3 : 1); p++) {
+            for (int k = 0; k < nq; k++) f[k] = sv == 1 || (p == 2 ? k >= 3 * nn : k < 3 * nn && (k % 3 == 1) == (p == 0)) ? F[k] : 0;
+            gal_rod_gather(m->rod, f, b);
+            gal_chol_solve(m->chol0, b, u);
+            gal_rod_mass_mult(m->rod, u, Mu);
+            double n0 = 0, n1 = 0;
+            for (int d = 0; d < n; d++) n0 += u[d] * Mu[d];
+            for (int k = 0; k < m->r; k++) { /* u less its M-projection on V */
+                double c = 0;
+                for (int d = 0; d < n; d++) c += m->V[(size_t)k * n + d] * Mu[d];
+                for (int d = 0; d < n; d++) u[d] -= c * m->V[(size_t)k * n + d];
+            }
+            gal_rod_mass_mult(m->rod, u, Mu);
+            for (int d = 0; d < n; d++) n1 += u[d] * Mu[d];
+            printf("    (static vectors %d, part %d: %.3g of the response outside V)\n", sv, p, sqrt(n1 / n0));
+            CHECK(n1 <= 1e-20 * n0, "the static response outside V: %g of %g", sqrt(n1), sqrt(n0));
+        }
+        double orth = 0;
+        for (int k = nsel; k < m->r; k++) {
+            gal_rod_mass_mult(m->rod, m->V + (size_t)k * n, Mu);
+            for (int j = 0; j <= k; j++) {
+                double c = 0;
+                for (int d = 0; d < n; d++) c += m->V[(size_t)j * n + d] * Mu[d];
+                orth = fmax(orth, fabs(c - (j == k)));
+            }
+        }
+        CHECK(orth <= 1e-10, "V^T M V - I on the static vectors: %g", orth);
+        free(F), free(f), free(b), free(u), free(Mu);
+        clear(&s);
+    }
+}
+
 int main(void)
 {
     RUN(test_mass_and_convective);
     RUN(test_step_work);
+    RUN(test_static_vectors);
     return CHECK_SUMMARY();
 }

@@ -126,6 +126,18 @@ int gal_loads_element(void *ctx, double t, const double *q, const double *v, int
     return GAL_OK;
 }
 
+int gal_loads_mean(const gal_loads *L, const double *q, double *f)
+{
+    int nq = L->rod->nq;
+    double *v = calloc((size_t)nq, sizeof(double));
+    if (!v) return gal_error(GAL_ENOMEM, "out of memory");
+    gal_loads Ls = *L;
+    Ls.u = Ls.w = NULL, Ls.nt = 0, Ls.ramp_time = 0, Ls.reverse_time = 0;
+    int st = gal_loads_full(&Ls, 0.0, q, v, f);
+    free(v);
+    return st;
+}
+
 int gal_loads_static(const gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations)
 {
     /* Picard on the follower load: solve grad U(q) = F(q) with F frozen, update F, repeat. The

@@ -2,7 +2,10 @@
  * modal derivatives theta_ij = -K0^-1 (dK/d eta_j) phi_i (central differences of the tangent, one
  * factorization of K0), the manifold q = q_eq + Phi eta + 1/2 Theta(eta, eta), its tangent basis
  * P(eta) = Phi + Theta(eta, .), its curvature term in the reduced tangent, and the projection of a
- * full state onto it (Gauss-Newton in the mass norm). */
+ * full state onto it (Gauss-Newton in the mass norm). With a mean load (o.static_vectors) the
+ * static response K0^-1 F_mean less its modal content is a further linear coordinate, with its
+ * modal derivatives like the modes': the quasi-static swing-out under the mean drag that neither
+ * the modes nor their derivatives carry. */
 #include "reduced/qm.h"
 #include "gallop/base/core.h"
 
@@ -55,12 +58,74 @@ static int inertia_build(gal_rom *m)
     return st;
 }
 
+/* The static response K0^-1 f (f: configuration-sized) less its part in V's first m->r columns
+ * (twice, modified Gram-Schmidt in the mass norm), appended as column m->r when what is left is
+ * over tol of its M-norm; w: 3 ndof scratch. */
+static int static_append(gal_rom *m, double *MV, const double *f, double tol, double *w)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, st;
+    double *c = w + n, *Mc = w + 2 * n;
+    gal_rod_gather(rod, f, w);
+    if ((st = gal_chol_solve(m->chol0, w, c))) return st;
+    gal_rod_mass_mult(rod, c, Mc);
+    double n0 = 0, n1 = 0;
+    for (int d = 0; d < n; d++) n0 += c[d] * Mc[d];
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; k < m->r; k++) {
+            double p = 0;
+            for (int d = 0; d < n; d++) p += MV[(size_t)k * n + d] * c[d];
+            for (int d = 0; d < n; d++) c[d] -= p * m->V[(size_t)k * n + d];
+        }
+    gal_rod_mass_mult(rod, c, Mc);
+    for (int d = 0; d < n; d++) n1 += c[d] * Mc[d];
+    if (!(n0 > 0) || !(n1 > tol * tol * n0)) return GAL_OK;
+    n1 = sqrt(n1);
+    for (int d = 0; d < n; d++) m->V[(size_t)m->r * n + d] = c[d] / n1, MV[(size_t)m->r * n + d] = Mc[d] / n1;
+    m->r++;
+    return GAL_OK;
+}
+
+/* Which part of the configuration entry qi a family split keeps: 0 the out-of-plane (y)
+ * translations, 1 the in-plane (x, z) ones, 2 the twists. */
+static int split_part(const gal_rod *rod, int qi)
+{
+    return qi >= 3 * rod->nn ? 2 : qi % 3 == 1 ? 0 : 1;
+}
+
+int gal_rom_qm_static(gal_rom *m, double *MV)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, nq = m->nq, st = GAL_OK, r0 = m->r, parts = m->o.static_vectors == 2 ? 3 : 1;
+    if (!m->o.mean_load || m->o.static_vectors <= 0) return GAL_OK;
+    double *w = malloc((size_t)3 * n * sizeof(double)), *f = malloc((size_t)nq * sizeof(double));
+    double *om = realloc(m->omega2, (size_t)(m->nmodes + parts) * sizeof(double));
+    if (om) m->omega2 = om;
+    if (!w || !f || !om) { free(w); free(f); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the static vectors"); }
+    for (int p = 0; p < parts && !st; p++) {
+        for (int k = 0; k < nq; k++) f[k] = parts == 1 || split_part(rod, k) == p ? m->o.mean_load[k] : 0;
+        st = static_append(m, MV, f, 1e-3, w);
+    }
+    for (int k = r0; k < m->r && !st; k++) { /* the Rayleigh quotient, for the sampling's rates */
+        const double *vk = m->V + (size_t)k * n;
+        gal_csc_symv(m->K0, vk, w);
+        double s = 0;
+        for (int d = 0; d < n; d++) s += vk[d] * w[d];
+        m->omega2[k] = s;
+    }
+    if (!st && !m->qm && !(m->qm = calloc(1, sizeof *m->qm))) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    if (!st) m->qm->nstatic = m->r - r0;
+    m->nmodes = m->r;
+    free(w); free(f);
+    return st;
+}
+
 int gal_rom_qm_build(gal_rom *m)
 {
     const gal_rod *rod = m->rod;
     int n = m->ndof, nq = m->nq, nm = m->nmodes, st = GAL_OK;
     if (nm > 64) return gal_error(GAL_EINPUT, "reduced model: the manifold takes at most 64 modes (%d selected)", nm);
-    gal_rom_qm *qm = calloc(1, sizeof *qm);
+    gal_rom_qm *qm = m->qm ? m->qm : calloc(1, sizeof *qm); /* made by gal_rom_qm_static */
     if (!qm) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the manifold");
     m->qm = qm;
     qm->np = nm * (nm + 1) / 2;

@@ -11,6 +11,7 @@
 
 typedef struct gal_rom_qm {
     int np;              /* pairs nm (nm + 1) / 2 */
+    int nstatic;         /* the last nstatic of the nm coordinates: static vectors (gal_rom_qm_static) */
     int *pair;           /* nm x nm */
     double *Th;          /* ndof x np, column-major: theta_p */
     double *P;           /* ndof x nm, column-major: the tangent basis at the last state asked */
@@ -29,6 +30,11 @@ typedef struct gal_rom_qm {
     double *f1, *d1;     /* r: the step's inertia and damping terms (rom.c's residual) */
 } gal_rom_qm;
 
+/* With o.mean_load and o.static_vectors: the static response K0^-1 F_mean (1: of the whole load;
+ * 2: of its out-of-plane, in-plane and twist parts apart) less its content in the selected modes,
+ * M-orthonormalized, appended to V as extra linear coordinates of the manifold (nmodes = r grows;
+ * omega2 their Rayleigh quotients); MV: the M-images of V's columns. Before gal_rom_qm_build. */
+int gal_rom_qm_static(gal_rom *m, double *MV);
 /* The modal derivatives of the modes in V's first nmodes columns (called by gal_rom_alloc). */
 int gal_rom_qm_build(gal_rom *m);
 void gal_rom_qm_free(gal_rom *m);

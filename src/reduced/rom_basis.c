@@ -152,6 +152,7 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     else gal_rom_default_opts(&m->o);
     if (force) m->force = *force;
     int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + (m->o.nextra > 0 ? m->o.nextra : 0);
+    if (m->o.manifold) rmax += 3; /* the static vectors (qm.h) */
     double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc((size_t)2 * n * sizeof(double));
     m->omega2 = malloc((size_t)nsel * sizeof(double));
     if (!MV || !c || !m->omega2 || alloc_state(m, rmax)) goto fail;
@@ -174,6 +175,8 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
         gal_error(GAL_EINPUT, "reduced model: the quadratic manifold takes no extra basis vectors");
         goto fail;
     }
+    if (m->o.manifold && gal_rom_qm_static(m, MV)) goto fail;
+    m->o.mean_load = NULL; /* not owned */
     if (m->o.derivatives && (m->o.manifold ? gal_rom_qm_build(m) : derivatives(m, MV, nsel))) goto fail;
     for (int k = 0; k < m->o.nextra; k++) {
         memcpy(c, m->o.extra + (size_t)k * n, (size_t)n * sizeof(double));

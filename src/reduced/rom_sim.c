@@ -111,9 +111,12 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     ro.extra = o->extra, ro.nextra = o->nextra;
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */
+    double *fm = ro.manifold && d->loads.table ? calloc((size_t)rod->nq, sizeof(double)) : NULL; /* qm.h */
+    if (fm && !gal_loads_mean(&d->loads, d->eq.q, fm)) ro.mean_load = fm, ro.static_vectors = 1;
     gal_rom_adapt a;
     gal_rom *m;
     int st = gal_rom_adapt_init(&a, &m, rod, d->eq.q, md, sel, r, &ro, &F);
+    free(fm);
     if (st) { gal_rom_adapt_clear(&a); return st; }
     a.policy = o->policy, a.relax = o->relax;
     st = gal_rom_start(m, 0.0, d->q_start, NULL);

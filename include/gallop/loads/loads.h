@@ -84,6 +84,10 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
  * nodes, f[6] on its twist; gal_loads_full adds these over the elements. */
 int gal_loads_element(void *ctx, double t, const double *q, const double *v, int j, double f[7]);
 
+/* The mean wind's load at rest at q, after the ramp, without turbulence (gal_loads_full's
+ * generalized forces, added to f): what gal_loads_static balances. */
+int gal_loads_mean(const gal_loads *L, const double *q, double *f);
+
 /* Static equilibrium under the mean wind (drag, lift and moment of the mean flow, no motion): q
  * is updated in place (start: the no-wind equilibrium). */
 int gal_loads_static(const gal_rod *rod, double *q, const gal_loads *L, double force_tol, int max_iter, int *iterations);

@@ -35,6 +35,12 @@ typedef struct gal_rom_opts {
                              * term and damping P^T C P (qm.h); 2: the same with the quadratic
                              * part's inertia dropped (mass Phi^T M Phi = I); 0: a linear basis
                              * V = [Phi, Theta] (the modal derivatives as coordinates) */
+    const double *mean_load; /* nq: the mean wind's load at rest at the equilibrium (gal_loads_mean)
+                             * or NULL; not owned, not kept */
+    int static_vectors;     /* on the manifold with mean_load: its static response K0^-1 F_mean less
+                             * its modal content as extra linear coordinates (qm.h): 0 none
+                             * (default), 1 one vector, 2 the out-of-plane, in-plane and twist
+                             * parts' apart */
     double deflation_tol;   /* drop a basis vector whose M-norm falls below this share after
                              * orthogonalization; default 1e-6 */
     double fd_step_m;       /* m: largest translation of the finite-difference steps; default 1e-3 */
