@@ -88,6 +88,8 @@ typedef struct gal_rom {
     double am, af, beta, gamma;
     double fscale, ffloor;  /* reduced force scales of the Newton test: the weight of the nodes
                              * projected, and the round-off of the elastic forces */
+    double ufloor;          /* J: the round-off of the rod's energy U (the sampled model's; 0: every
+                             * element): below it the discrete gradient is not corrected */
     /* state */
     double t;
     double *x, *v, *a;      /* r */
