@@ -4,8 +4,10 @@
  * derivatives, and the linear modes alone too stiff; the static response to a large modal load
  * against the full rod's; the reduced force against the exact condensed force at random states of
  * five modes, to the order the method promises; free vibration against the full model, vertical and
- * horizontal, small and large; the full model's modal damping at every selected mode. Every element
- * is evaluated (o.hyper = 0): the sampled, weighted model is held to its own figures in test_ecsw.c. */
+ * horizontal, small and large; the full model's modal damping at every selected mode. The
+ * projection's own tests evaluate every element (o.hyper = 0: the sampled, weighted model is held
+ * to its own fit in test_ecsw.c); free vibration and damping run the default model (sampled,
+ * weighted elements, the kept Newton tangent), the one every reduced run uses. */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/full/dynamics.h"
@@ -32,10 +34,9 @@ static int make_span(span *s, const gal_rod_params *p, double tension, const int
     return 0;
 }
 
-/* The options of these tests: every element (the Galerkin projection exactly, what they assert;
- * test_ecsw.c holds the sampled, weighted one to its own figures) and a fresh Newton tangent each
- * step (the kept one stops within newton_tol of the gravity-scaled force: on a 1-mm free vibration
- * that left the horizontal p-p 1.06% above the full model's, 0.5% with a fresh tangent) */
+/* The options of the projection's tests: every element (the Galerkin projection exactly, what they
+ * assert; test_ecsw.c holds the sampled, weighted one to its own figures) and a fresh Newton
+ * tangent each step. */
 static void exact_opts(gal_rom_opts *o)
 {
     gal_rom_default_opts(o);
@@ -368,7 +369,7 @@ static void free_vibration_vs_full(gal_family fam, double swing)
     double w = s.md.mode[s.sel[iv]].omega, T = 2 * GAL_PI / w, scale = sqrt(sagged.mass * sagged.length / 2);
     int mid = s.eq.rod->nn / 2, oq = 3 * mid + (fam == GAL_FAMILY_HORIZONTAL ? 1 : 2), n = s.md.ndof;
     gal_rom_opts o;
-    exact_opts(&o);
+    gal_rom_default_opts(&o); /* the model of every reduced run: sampled, weighted, kept tangent */
     o.h = T / 400;
     for (int large = 0; large < 2; large++) {
         double vel = (large ? swing : 1e-3) * w * scale * 0.5;
@@ -423,7 +424,7 @@ static void test_modal_damping_every_mode(void)
     double zeta = 0.03;
     gal_damping *C = gal_damping_modal_alloc(s.eq.rod, s.eq.q, zeta, GAL_DAMPING_BAND_HZ);
     gal_rom_opts o;
-    exact_opts(&o);
+    gal_rom_default_opts(&o); /* sampled, weighted: Cr is projected on the basis all the same */
     o.damping = C;
     gal_rom *m = C ? gal_rom_alloc(s.eq.rod, s.eq.q, &s.md, s.sel, s.r, &o, NULL) : NULL;
     CHECK(m != NULL, "%s", gal_error_message());

@@ -92,13 +92,17 @@ static int mirror_symmetric(const gal_rom *m)
 }
 
 /* The constants U_c, f_c, K_c: U_h, its gradient and its Hessian equal U, V^T grad U and
- * V^T K0 V at the equilibrium (the linear dynamics, the modes' frequencies, are exact). */
+ * V^T K0 V at the equilibrium (the linear dynamics, the modes' frequencies, are exact); and the
+ * round-off of U_h, m->ufloor: an element's energy moves by |g_e| |q_e| eps when its coordinates
+ * are rounded (the tension times the coordinates' round-off), summed with the weights, times
+ * UFLOOR_SAFETY. */
+#define UFLOOR_SAFETY 4.0
 static int constants(gal_rom *m)
 {
     gal_rom_hyper *h = m->hyper;
     const gal_rod *rod = m->rod;
     int r = m->r, qi[GAL_ROD_ELEMENT_NQ];
-    double U0, Ue, g[GAL_ROD_ELEMENT_NQ], *col = m->fr, *Ke = m->Kr; /* Kr: scratch, refreshed after */
+    double U0, Ue, g[GAL_ROD_ELEMENT_NQ], fl = 0, *col = m->fr, *Ke = m->Kr; /* Kr: scratch, refreshed after */
     gal_rom_reconstruct_at(m, NULL, NULL);
     int st = gal_rod_eval(rod, m->q, &U0, m->gq, NULL);
     if (st) return st;
@@ -114,7 +118,12 @@ static int constants(gal_rom *m)
         for (int i = 0; i < r; i++) h->fc[i] -= S->w[k] * col[i];
         for (int i = 0; i < r * r; i++) h->Kc[i] -= S->w[k] * Ke[i];
         h->Uc -= S->w[k] * Ue;
+        double ue = 0;
+        for (int i = 0; i < GAL_ROD_ELEMENT_NQ; i++)
+            if (qi[i] >= 0) ue += fabs(g[i] * m->q[qi[i]]);
+        fl += S->w[k] * ue;
     }
+    m->ufloor = UFLOOR_SAFETY * 2.2e-16 * fl;
     m->hJ = 0;
     return GAL_OK;
 }

@@ -239,7 +239,9 @@ static void newmark(gal_rom *m, double h)
 
 /* The discrete gradient of the internal force over the step (Gonzalez 1996) into m->fdg:
  * fbar = (fi(x0) + fi(x1)) / 2 corrected along dx = x1 - x0 so that fdg . dx = U(x1) - U(x0)
- * exactly: with the trapezoidal Newmark updates (rho_inf = 1) the step then conserves T + U. */
+ * exactly: with the trapezoidal Newmark updates (rho_inf = 1) the step then conserves T + U. Not
+ * where U(x1) - U(x0) - fbar . dx is within the energy's round-off m->ufloor: the correction would
+ * be that round-off over |dx|, noise that stops Newton on small steps (free vibration of 1 mm). */
 static void discrete_gradient(gal_rom *m)
 {
     int r = m->r;
@@ -249,7 +251,7 @@ static void discrete_gradient(gal_rom *m)
         m->fdg[i] = 0.5 * (m->fi[i] + m->fi1[i]);
         dd += dx * dx, fd += m->fdg[i] * dx, xs += m->x1[i] * m->x1[i] + m->x[i] * m->x[i];
     }
-    if (!(dd > 1e-28 * xs) || !(dd > 0)) return;
+    if (!(dd > 1e-28 * xs) || !(dd > 0) || !(fabs(m->U1 - m->U - fd) > m->ufloor)) return;
     double c = (m->U1 - m->U - fd) / dd;
     for (int i = 0; i < r; i++) m->fdg[i] += c * (m->x1[i] - m->x[i]);
 }
