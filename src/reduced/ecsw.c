@@ -52,12 +52,13 @@ static int sample_entries(gal_rom *m)
         S->Qz = S->Tt = S->Pc = S->qs = NULL;
         int nu1 = nu ? nu : 1;
         S->uq = malloc((size_t)nu1 * sizeof(int)), S->Vu = malloc((size_t)nu1 * r * sizeof(double));
-        if (!S->uq || !S->Vu) { free(where); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample"); }
+        S->Pc = malloc((size_t)nu1 * r * sizeof(double)); /* also the tangent's scratch (ecsw_eval.c) */
+        if (!S->uq || !S->Vu || !S->Pc) { free(where); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample"); }
         if (m->qm) {
             int np = m->qm->np;
             S->Qz = malloc((size_t)nu1 * (r + np) * sizeof(double)), S->Tt = malloc((size_t)nu1 * r * r * sizeof(double));
-            S->Pc = malloc((size_t)nu1 * r * sizeof(double)), S->qs = malloc((size_t)nu1 * sizeof(double));
-            if (!S->Qz || !S->Tt || !S->Pc || !S->qs) { free(where); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample"); }
+            S->qs = malloc((size_t)nu1 * sizeof(double));
+            if (!S->Qz || !S->Tt || !S->qs) { free(where); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample"); }
         }
         for (int qk = 0; qk < m->nq; qk++) {
             int u = where[qk];

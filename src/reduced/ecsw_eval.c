@@ -12,14 +12,20 @@
 #include "reduced/hyper.h"
 #include "reduced/qm.h"
 
-/* a . b with four partial sums (the loop is latency-bound otherwise) */
-static double dot(const double *a, const double *b, int n)
+/* dgemv and dgemm of the BLAS (column-major): the products with the basis' rows at the sample */
+void dgemv_(const char *trans, const int *m, const int *n, const double *alpha, const double *a, const int *lda,
+            const double *x, const int *incx, const double *beta, double *y, const int *incy);
+void dgemm_(const char *ta, const char *tb, const int *m, const int *n, const int *k, const double *alpha,
+            const double *a, const int *lda, const double *b, const int *ldb, const double *beta, double *c,
+            const int *ldc);
+
+/* y = beta y + A^T x (trans "T") or A x ("N"), A the r x nu column-major matrix B (B's rows nu x r,
+ * row-major) */
+static void rows_mult(const char *trans, int r, int nu, const double *B, const double *x, double beta, double *y)
 {
-    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-    int k = 0;
-    for (; k + 3 < n; k += 4) s0 += a[k] * b[k], s1 += a[k + 1] * b[k + 1], s2 += a[k + 2] * b[k + 2], s3 += a[k + 3] * b[k + 3];
-    for (; k < n; k++) s0 += a[k] * b[k];
-    return (s0 + s1) + (s2 + s3);
+    const double one = 1;
+    const int inc = 1;
+    if (nu > 0 && r > 0) dgemv_(trans, &r, &nu, &one, B, &r, x, &inc, &beta, y, &inc);
 }
 
 /* q = q_eq + V x (and v = V xd when xd) at sample S's entries of m->q (m->vq); returns the rows
@@ -30,10 +36,12 @@ static const double *reconstruct(gal_rom *m, gal_rom_hyper_set *h, const double 
 {
     int r = m->r, nu = h->nu;
     if (!m->qm) {
-        for (int u = 0; u < nu; u++) {
-            const double *vu = h->Vu + (size_t)u * r;
-            m->q[h->uq[u]] = m->q_eq[h->uq[u]] + dot(vu, x, r);
-            if (xd) m->vq[h->uq[u]] = dot(vu, xd, r);
+        double *y = m->hyper->gu; /* scratch (nq >= nu) */
+        rows_mult("T", r, nu, h->Vu, x, 0, y);
+        for (int u = 0; u < nu; u++) m->q[h->uq[u]] = m->q_eq[h->uq[u]] + y[u];
+        if (xd) {
+            rows_mult("T", r, nu, h->Vu, xd, 0, y);
+            for (int u = 0; u < nu; u++) m->vq[h->uq[u]] = y[u];
         }
         return h->Vu;
     }
@@ -82,6 +90,39 @@ static void curvature(const gal_rom *m, const gal_rom_hyper_set *S, const double
         }
 }
 
+/* Y_p += w sum_q H(p, q) B_q over element k's entries p, q (Y, B: nu x r, row-major). */
+static void tangent_element(int r, const int *idx, double w, const double *H, const double *B, double *Y)
+{
+    const int NQ = GAL_ROD_ELEMENT_NQ;
+    int loc[GAL_ROD_ELEMENT_NQ], nl = 0;
+    for (int a = 0; a < NQ; a++)
+        if (idx[a] >= 0) loc[nl++] = a;
+    for (int p = 0; p < nl; p++) {
+        double *yp = Y + (size_t)idx[loc[p]] * r;
+        for (int q = 0; q < nl; q++) {
+            double hpq = w * H[loc[p] * NQ + loc[q]];
+            if (hpq == 0) continue;
+            const double *bq = B + (size_t)idx[loc[q]] * r;
+            for (int j = 0; j < r; j++) yp[j] += hpq * bq[j];
+        }
+    }
+}
+
+/* Kr += B^T Y (B, Y: nu x r row-major; Kr r x r holds K_c, symmetric), symmetrized; on the manifold
+ * its curvature sum_u gu_u theta_u too. One dgemm: the O(nu r^2) part of a tangent. */
+static void tangent_finish(const gal_rom *m, const gal_rom_hyper_set *S, const double *B, const double *Y,
+                           const double *gu, double *Kr)
+{
+    int r = m->r, nu = S->nu;
+    double one = 1;
+    if (nu > 0) dgemm_("N", "T", &r, &r, &nu, &one, B, &r, Y, &r, &one, Kr, &r);
+    for (int i = 0; i < r; i++)
+        for (int j = i + 1; j < r; j++) Kr[i * r + j] = 0.5 * (Kr[i * r + j] + Kr[j * r + i]);
+    if (m->qm) curvature(m, S, gu, Kr);
+    for (int i = 0; i < r; i++)
+        for (int j = 0; j < i; j++) Kr[i * r + j] = Kr[j * r + i];
+}
+
 int gal_rom_hyper_internal(gal_rom *m, const double *x, double *f, double *Kr)
 {
     gal_rom_hyper *h = m->hyper;
@@ -90,54 +131,27 @@ int gal_rom_hyper_internal(gal_rom *m, const double *x, double *f, double *Kr)
     int r = m->r;
     double U = h->Uc, g[GAL_ROD_ELEMENT_NQ], H[GAL_ROD_ELEMENT_NQ * GAL_ROD_ELEMENT_NQ];
     const double *Bu = reconstruct(m, S, x, NULL);
-    for (int i = 0; i < r; i++) { /* f = f_c + K_c x, U = U_c + f_c.x + x.K_c x / 2 */
-        double kx = dot(h->Kc + (size_t)i * r, x, r);
-        f[i] = h->fc[i] + kx, U += (h->fc[i] + 0.5 * kx) * x[i];
-    }
-    if (Kr) memcpy(Kr, h->Kc, (size_t)r * r * sizeof(double));
+    rows_mult("N", r, r, h->Kc, x, 0, f); /* f = f_c + K_c x, U = U_c + f_c.x + x.K_c x / 2 */
+    for (int i = 0; i < r; i++) U += (h->fc[i] + 0.5 * f[i]) * x[i], f[i] += h->fc[i];
     double *gu = h->gu; /* the weighted gradient at the sample's entries, projected once at the end */
     memset(gu, 0, (size_t)S->nu * sizeof(double));
-    double *T = h->T; /* NQ x r rows of w H V_e */
+    double *Y = S->Pc; /* the weighted Hessian times B at the entries (free after reconstruct) */
+    if (Kr) {
+        memcpy(Kr, h->Kc, (size_t)r * r * sizeof(double));
+        memset(Y, 0, (size_t)S->nu * r * sizeof(double));
+    }
     for (int k = 0; k < S->n; k++) {
         double Ue, w = S->w[k];
         const int *idx = S->idx + (size_t)k * NQ;
         int st = gal_rod_element_eval(m->rod, S->elem[k], m->q, &Ue, g, Kr ? H : NULL);
         if (st) return st;
         U += w * Ue;
-        int loc[GAL_ROD_ELEMENT_NQ], nl = 0;
         for (int a = 0; a < NQ; a++)
-            if (idx[a] >= 0) loc[nl++] = a;
-        for (int p = 0; p < nl; p++) gu[idx[loc[p]]] += w * g[loc[p]];
-        if (!Kr) continue;
-        for (int p = 0; p < nl; p++) { /* T_p = w sum_q H(p, q) V_q */
-            double *tp = T + (size_t)p * r;
-            memset(tp, 0, (size_t)r * sizeof(double));
-            for (int q = 0; q < nl; q++) {
-                double hpq = w * H[loc[p] * NQ + loc[q]];
-                if (hpq == 0) continue;
-                const double *vq = Bu + (size_t)idx[loc[q]] * r;
-                for (int j = 0; j < r; j++) tp[j] += hpq * vq[j];
-            }
-        }
-        for (int p = 0; p < nl; p++) { /* Kr += V_e^T T, the upper triangle */
-            const double *vp = Bu + (size_t)idx[loc[p]] * r, *tp = T + (size_t)p * r;
-            for (int i = 0; i < r; i++) {
-                double vi = vp[i];
-                if (vi == 0) continue;
-                double *ki = Kr + (size_t)i * r;
-                for (int j = i; j < r; j++) ki[j] += vi * tp[j];
-            }
-        }
+            if (idx[a] >= 0) gu[idx[a]] += w * g[a];
+        if (Kr) tangent_element(r, idx, w, H, Bu, Y);
     }
-    if (Kr && m->qm) curvature(m, S, gu, Kr);
-    for (int u = 0; u < S->nu; u++) { /* f += V_S^T gu */
-        const double *vu = Bu + (size_t)u * r;
-        double gv = gu[u];
-        for (int i = 0; i < r; i++) f[i] += gv * vu[i];
-    }
-    if (Kr) /* the upper triangle was added to: K_c is symmetric */
-        for (int i = 0; i < r; i++)
-            for (int j = 0; j < i; j++) Kr[i * r + j] = Kr[j * r + i];
+    if (Kr) tangent_finish(m, S, Bu, Y, gu, Kr);
+    rows_mult("N", r, S->nu, Bu, gu, 1, f); /* f += V_S^T gu */
     m->U1 = U;
     if (!isfinite(U)) return gal_error(GAL_EFAIL, "reduced model: the sampled energy is not finite");
     return GAL_OK;
@@ -163,10 +177,6 @@ int gal_rom_hyper_external(gal_rom *m, double t, const double *x, const double *
             if (u >= 0) gu[u] += S->w[k] * fl[a];
         }
     }
-    for (int u = 0; u < S->nu; u++) {
-        const double *vu = Bu + (size_t)u * r;
-        double gv = gu[u];
-        for (int i = 0; i < r; i++) f[i] += gv * vu[i];
-    }
+    rows_mult("N", r, S->nu, Bu, gu, 1, f);
     return GAL_OK;
 }

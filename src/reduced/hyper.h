@@ -19,7 +19,8 @@ typedef struct gal_rom_hyper_set {
     /* the manifold (qm.h), laid out for loops over the entries: */
     double *Qz;                /* (r + np) x nu: Phi's columns, then Theta's pairs, at the entries */
     double *Tt;                /* r x (r x nu): Tt[j][k nu + u] = Theta_u(k, j) */
-    double *Pc;                /* r x nu: P(x) at the entries, column-major */
+    double *Pc;                /* r x nu: P(x) at the entries, column-major (the manifold's), and
+                                * the tangent's scratch nu x r (ecsw_eval.c) */
     double *qs;                /* nu: scratch */
     double fit_error;          /* the NNLS residual, relative */
     double *rw;                /* r: the row weights of the fit and the check (1 / RMS of each

@@ -59,6 +59,24 @@ static void project(gal_rom *m, const double *x, const double *g, double *f)
     }
 }
 
+static int internal(gal_rom *m, const double *x, double *f, double *Kr);
+static int external(gal_rom *m, double t, const double *x, const double *xd, double *f);
+
+/* The reduced equations' own acceleration at the state into ac: fe - Cr v - fi (the integrator's
+ * a lags it by the step's truncation error). m->da is scratch. */
+static int consistent_acceleration(gal_rom *m, double *ac)
+{
+    int r = m->r, st = internal(m, m->x, ac, NULL);
+    if (!st) st = external(m, m->t, m->x, m->v, m->da);
+    if (st) return st;
+    for (int i = 0; i < r; i++) {
+        double c = 0;
+        for (int j = 0; j < r; j++) c += m->Cr[i * r + j] * m->v[j];
+        ac[i] = m->da[i] - c - ac[i];
+    }
+    return GAL_OK;
+}
+
 void gal_rom_full_rates(gal_rom *m, double *vf, double *af, double *u)
 {
     int n = m->ndof, r = m->r;
@@ -82,11 +100,13 @@ void gal_rom_full_rates(gal_rom *m, double *vf, double *af, double *u)
         }
         return;
     }
+    const double *acc = m->a;
+    if (!consistent_acceleration(m, m->fr)) acc = m->fr; /* else the integrator's */
     for (int d = 0; d < n; d++) {
         double sv = 0, sa = 0, su = 0;
         for (int k = 0; k < r; k++) {
             double vk = m->V[(size_t)k * n + d];
-            sv += vk * m->v[k], sa += vk * m->a[k], su += vk * m->x[k];
+            sv += vk * m->v[k], sa += vk * acc[k], su += vk * m->x[k];
         }
         vf[d] = sv, af[d] = sa, u[d] = su;
     }
@@ -278,11 +298,30 @@ static double residual(gal_rom *m)
     return rn / fmax(m->o.newton_tol * fmax(sc, m->fscale), m->ffloor);
 }
 
+/* The iteration matrix J = (1-am) I + (1-af) (gamma h Cr + beta h^2 Kr), LU-factored. The loads'
+ * derivatives are left out (measured: with them, by differences, Newton takes as many iterations
+ * at the steps used and each fresh matrix costs r more evaluations of the loads). */
+static int iteration_matrix(gal_rom *m, double h)
+{
+    int r = m->r;
+    double af = m->af, cm = 1 - m->am, cc = (1 - af) * m->gamma * h, ck = (1 - af) * m->beta * h * h;
+    for (int k = 0; k < r * r; k++) m->J[k] = cc * m->Cr[k] + ck * m->Kr[k];
+    for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
+    if (m->qm && m->qm->inertia) { /* the manifold's mass, damping and convective term */
+        for (int k = 0; k < r * r; k++) m->J[k] = ck * m->Kr[k];
+        gal_rom_qm_iteration(m, m->x1, m->v1, cm, cc, m->J);
+    }
+    m->hJ = 0;
+    if (lu_factor(m->J, r, m->piv)) return gal_error(GAL_EFAIL, "reduced model: singular iteration matrix");
+    m->hJ = h;
+    return GAL_OK;
+}
+
 /* Newton on a1 for one step of h from the state; x1, v1, a1, fi1, fe1 hold the result. */
 static int newton(gal_rom *m, double h)
 {
     int r = m->r, st = GAL_OK;
-    double af = m->af, t1 = m->t + h;
+    double t1 = m->t + h;
     memcpy(m->a1, m->a, (size_t)r * sizeof(double));
     if (m->qm && m->qm->inertia) gal_rom_qm_begin(m);
     /* modified Newton: the iteration matrix of an earlier step is kept (o.reuse_tangent) while it
@@ -304,16 +343,8 @@ static int newton(gal_rom *m, double h)
         }
         prev = rn;
         if (fresh) {
-            double cm = 1 - m->am, cc = (1 - af) * m->gamma * h, ck = (1 - af) * m->beta * h * h;
-            for (int k = 0; k < r * r; k++) m->J[k] = cc * m->Cr[k] + ck * m->Kr[k];
-            for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
-            if (m->qm && m->qm->inertia) { /* the manifold's mass, damping and convective term */
-                for (int k = 0; k < r * r; k++) m->J[k] = ck * m->Kr[k];
-                gal_rom_qm_iteration(m, m->x1, m->v1, cm, cc, m->J);
-            }
-            m->hJ = 0;
-            if (lu_factor(m->J, r, m->piv)) { st = gal_error(GAL_EFAIL, "reduced model: singular iteration matrix"); break; }
-            m->hJ = h, fresh = 0;
+            if ((st = iteration_matrix(m, h))) break;
+            fresh = 0;
         }
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
         lu_solve(m->J, r, m->piv, m->da);

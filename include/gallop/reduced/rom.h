@@ -147,7 +147,10 @@ int gal_rom_step(gal_rom *m);
 int gal_rom_advance(gal_rom *m, double t_target);
 
 /* Over the free dofs at the state: the velocity vf, the acceleration af and the displacement u
- * from the equilibrium (V x', V x'', V x; on the manifold P x', P x'' + Theta(x', x'), u(x)). */
+ * from the equilibrium (V x', V x'', V x; on the manifold P x', P x'' + Theta(x', x'), u(x)). x''
+ * is the reduced equations' own acceleration at the state, fe - Cr x' - fi (one evaluation), not
+ * the integrator's a, which lags it by the step's truncation error (the self-check measures the
+ * model, not the step); on the manifold, and if that evaluation fails, the integrator's a. */
 void gal_rom_full_rates(gal_rom *m, double *vf, double *af, double *u);
 /* The tangent basis at x (ndof x r, column-major): V, or P(x) on the manifold (held by m). */
 const double *gal_rom_basis_at(gal_rom *m, const double *x);
