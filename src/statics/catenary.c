@@ -2,6 +2,7 @@
 #include "gallop/statics/catenary.h"
 #include "gallop/base/core.h"
 
+#include <float.h>
 #include <math.h>
 
 void gal_catenary_point(const gal_catenary *c, double s, double *x, double *z, double *tension)
@@ -164,7 +165,8 @@ int gal_catenary_solve(gal_catenary *c, int spec, double value)
         t = *c;
         if (gal_catenary_solve(&t, 0, exp(m)) != GAL_OK) return GAL_EFAIL;
         double f = gal_catenary_sag(&t) - value;
-        if (fabs(f) < 1e-12 * value || hi - lo < 1e-15) {
+        /* the bracket on log H cannot shrink below a few doubles' spacing at |log H| ~ 10 */
+        if (fabs(f) < 1e-12 * value || hi - lo < 8 * DBL_EPSILON * fmax(1, fabs(m))) {
             *c = t;
             return GAL_OK;
         }
