@@ -29,7 +29,7 @@ void gal_onset_clear(gal_onset *r)
     memset(r, 0, sizeof *r);
 }
 
-typedef struct {
+struct gal_onset_track {
     int n, nb, N, nm, lwork, nq, nev, ncand;
     int ntors; /* torsional modes appended to the basis above its lowest nb - ntors modes */
     double *phi, *omega, *Ka, *Ca, *Cs, *Kt, *Ct, *A, *wr, *wi, *VR, *work;
@@ -37,7 +37,8 @@ typedef struct {
     double *pre, *pim, *pf;        /* followed modes at the previous speed: shapes, frequency */
     double *score, *full, *mdiag, *q, *qprev, *tmp;
     int *used;
-} work;
+};
+typedef struct gal_onset_track work;
 
 static void work_free(work *w)
 {
@@ -47,11 +48,12 @@ static void work_free(work *w)
     free(w->used);
 }
 
-static int work_alloc(work *w, const gal_rod *rod, int nb, int nm)
+/* The work of n dofs (nq of the full configuration), nb basis modes, nm followed; w->mdiag unset. */
+static int work_alloc_n(work *w, int ndof, int nq, int nb, int nm)
 {
     memset(w, 0, sizeof *w);
-    size_t n = (size_t)rod->ndof, N = 2 * (size_t)nb, b2 = (size_t)nb * nb;
-    w->n = rod->ndof, w->nb = nb, w->N = (int)N, w->nm = nm, w->nq = rod->nq, w->lwork = (int)(8 * N + 64);
+    size_t n = (size_t)ndof, N = 2 * (size_t)nb, b2 = (size_t)nb * nb;
+    w->n = ndof, w->nb = nb, w->N = (int)N, w->nm = nm, w->nq = nq, w->lwork = (int)(8 * N + 64);
     w->phi = malloc(n * nb * sizeof(double)), w->omega = malloc(nb * sizeof(double));
     w->Ka = malloc(b2 * sizeof(double)), w->Ca = malloc(b2 * sizeof(double)), w->Cs = malloc(b2 * sizeof(double));
     w->Kt = malloc(b2 * sizeof(double)), w->Ct = malloc(b2 * sizeof(double)), w->A = malloc(N * N * sizeof(double));
@@ -60,21 +62,26 @@ static int work_alloc(work *w, const gal_rod *rod, int nb, int nm)
     w->cre = malloc(n * N * sizeof(double)), w->cim = malloc(n * N * sizeof(double));
     w->clr = malloc(N * sizeof(double)), w->cli = malloc(N * sizeof(double));
     w->pre = malloc(n * nm * sizeof(double)), w->pim = malloc(n * nm * sizeof(double)), w->pf = malloc(nm * sizeof(double));
-    w->score = malloc((size_t)nm * N * sizeof(double)), w->full = malloc(2 * (size_t)rod->nq * sizeof(double));
-    w->mdiag = malloc(n * sizeof(double)), w->q = malloc((size_t)rod->nq * sizeof(double));
-    w->qprev = malloc((size_t)rod->nq * sizeof(double)), w->tmp = malloc(N * sizeof(double));
+    w->score = malloc((size_t)nm * N * sizeof(double)), w->full = malloc(2 * n * sizeof(double) + 2 * (size_t)nq * sizeof(double));
+    w->mdiag = malloc(n * sizeof(double)), w->q = malloc((size_t)nq * sizeof(double));
+    w->qprev = malloc((size_t)nq * sizeof(double)), w->tmp = malloc(N * sizeof(double));
     w->used = malloc(N * sizeof(int));
     double *p[] = {w->phi, w->omega, w->Ka, w->Ca, w->Cs, w->Kt, w->Ct, w->A, w->wr, w->wi, w->VR, w->work, w->cre,
                    w->cim, w->clr, w->cli, w->pre, w->pim, w->pf, w->score, w->full, w->mdiag, w->q, w->qprev, w->tmp};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++)
         if (!p[k]) return gal_error(GAL_ENOMEM, "onset: out of memory for a basis of %d modes", nb);
     if (!w->used) return gal_error(GAL_ENOMEM, "onset: out of memory");
-    gal_rod_mass_diag(rod, w->mdiag);
     return GAL_OK;
 }
 
-/* Swing, twist, angle of attack and the table's criteria at mid-span of configuration q. */
-static void measures(const gal_rod *rod, const double *q, const gal_loads *L, gal_onset_speed *sp)
+static int work_alloc(work *w, const gal_rod *rod, int nb, int nm)
+{
+    int st = work_alloc_n(w, rod->ndof, rod->nq, nb, nm);
+    if (!st) gal_rod_mass_diag(rod, w->mdiag);
+    return st;
+}
+
+void gal_onset_measures(const gal_rod *rod, const double *q, const gal_loads *L, gal_onset_speed *sp)
 {
     int nn = rod->nn, nel = rod->p.elements, mid = nn / 2, e = nel / 2;
     double off[3];
@@ -132,14 +139,23 @@ static int basis_at(work *w, const gal_rod *rod, const double *q, const gal_load
     return GAL_OK;
 }
 
+static int modal_eig(work *w, gal_onset_speed *sp);
+
 /* Linearize at q, solve, and leave the candidates (eigenvalues with Im >= 0 and their physical
  * shapes) in w. */
 static int linearize(work *w, const gal_rod *rod, const double *q, const gal_loads *L, const gal_damping *C,
                      gal_onset_speed *sp)
 {
-    int nb = w->nb, n = w->n, st = gal_onset_aero_matrices(rod, q, L, w->phi, nb, w->Ka, w->Ca);
-    if (!st) st = gal_damping_project(C, w->phi, nb, w->Cs);
-    if (st) return st;
+    int st = gal_onset_aero_matrices(rod, q, L, w->phi, w->nb, w->Ka, w->Ca);
+    if (!st) st = gal_damping_project(C, w->phi, w->nb, w->Cs);
+    return st ? st : modal_eig(w, sp);
+}
+
+/* On the basis w->phi (frequencies w->omega) with w->Ka, w->Ca, w->Cs: K_t's smallest eigenvalue,
+ * the linear divergence speed, the state matrix's eigenvalues, the candidates. */
+static int modal_eig(work *w, gal_onset_speed *sp)
+{
+    int nb = w->nb, n = w->n, st;
     for (int j = 0; j < nb * nb; j++) w->Kt[j] = w->Ka[j], w->Ct[j] = w->Cs[j] + w->Ca[j];
     for (int j = 0; j < nb; j++) w->Kt[j + (size_t)j * nb] += w->omega[j] * w->omega[j];
     /* the static stability: smallest real eigenvalue of K_t */
@@ -202,7 +218,7 @@ static double mac(const work *w, const double *ar, const double *ai, const doubl
 }
 
 /* Assign the candidates to the followed modes (first speed: the lowest |lambda|), record them. */
-static void follow(work *w, const gal_rod *rod, const double *q, gal_onset *out, int i)
+static void follow(work *w, gal_onset_shares_fn shares, void *ctx, gal_onset *out, int i)
 {
     int nm = w->nm, nc = w->ncand, n = w->n;
     for (int c = 0; c < nc; c++) w->used[c] = 0;
@@ -235,17 +251,30 @@ static void follow(work *w, const gal_rod *rod, const double *q, gal_onset *out,
         m->frequency_hz = li / (2 * GAL_PI);
         m->damping_ratio = r > 0 ? -lr / r : 0;
         m->growth_rate = lr;
-        gal_onset_shares(rod, q, ur, ui, w->full, m->share);
+        shares(ctx, ur, ui, m->share);
         memcpy(w->pre + (size_t)k * n, ur, (size_t)n * sizeof(double));
         memcpy(w->pim + (size_t)k * n, ui, (size_t)n * sizeof(double));
         w->pf[k] = li;
     }
 }
 
+typedef struct { const gal_rod *rod; const double *q; double *full; } rod_shares_ctx;
+
+static void rod_shares(void *ctx, const double *ure, const double *uim, double share[3])
+{
+    rod_shares_ctx *c = ctx;
+    gal_onset_shares(c->rod, c->q, ure, uim, c->full, share);
+}
+
 /* Onset (lowest zero crossing of a followed mode's damping ratio), divergence, fold. */
-static void conclude(gal_onset *out)
+void gal_onset_conclude(gal_onset *out)
 {
     int nm = out->nmodes;
+    for (int i = 0; i < out->nspeed; i++)
+        if (!out->sp[i].ok) {
+            out->sp[i].swing_deg = out->sp[i].twist_deg = out->sp[i].alpha_deg = NAN;
+            for (int k = 0; k < nm; k++) out->m[(size_t)i * nm + k].damping_ratio = NAN;
+        }
     out->onset_speed = out->divergence_speed = out->restable_speed = NAN;
     out->onset_mode = -1;
     double zprev = NAN, uprev = NAN; /* the least damping ratio over the modes at the last speed solved */
@@ -353,25 +382,60 @@ int gal_onset_analyse(const gal_rod *rod, const double *q_eq, const gal_loads *L
         sp->speed = Ls.speed = u[i];
         if (!ok[i]) continue;
         memcpy(w.q, Q + (size_t)i * rod->nq, (size_t)rod->nq * sizeof(double));
-        measures(rod, w.q, &Ls, sp);
+        gal_onset_measures(rod, w.q, &Ls, sp);
         sp->fold = fold[i];
         st = basis_at(&w, rod, w.q, &Ls, C, mass, o->families, sp);
         if (!st) st = linearize(&w, rod, w.q, &Ls, C, sp);
-        if (!st) follow(&w, rod, w.q, out, i);
+        rod_shares_ctx rc = {rod, w.q, w.full};
+        if (!st) follow(&w, rod_shares, &rc, out, i);
         sp->ok = !st;
     }
     free(u); free(Q); free(ok);
     if (out->sp) memmove(out->sp, out->sp + 1, (size_t)out->nspeed * sizeof *out->sp);
     work_free(&w);
     if (st) { gal_onset_clear(out); return st; }
-    for (int i = 0; i < out->nspeed; i++)
-        if (!out->sp[i].ok) {
-            out->sp[i].swing_deg = out->sp[i].twist_deg = out->sp[i].alpha_deg = NAN;
-            for (int k = 0; k < nm; k++) out->m[(size_t)i * nm + k].damping_ratio = NAN;
-        }
     double fs = out->fold_speed;
-    conclude(out);
+    gal_onset_conclude(out);
     out->fold_speed = fs;
     out->wall_time_s = gal_wall_time() - t0;
     return GAL_OK;
+}
+
+/* ---- the eigen-sweep on another discretization (onset.h) ---- */
+
+gal_onset_track *gal_onset_track_alloc(int n, int nb, int nm, const double *mdiag)
+{
+    work *w = malloc(sizeof *w);
+    if (!w) { gal_error(GAL_ENOMEM, "onset: out of memory"); return NULL; }
+    if (nb < 1 || nm < 1 || nm > nb || nm > 64 || nb > n) {
+        free(w);
+        gal_error(GAL_EINPUT, "onset: basis %d and modes followed %d of %d dofs: allowed 1 <= modes <= basis <= dofs, "
+                  "modes <= 64", nb, nm, n);
+        return NULL;
+    }
+    if (work_alloc_n(w, n, 1, nb, nm)) { work_free(w); free(w); return NULL; }
+    memcpy(w->mdiag, mdiag, (size_t)n * sizeof(double));
+    return w;
+}
+
+gal_onset_track *gal_onset_track_free(gal_onset_track *t)
+{
+    if (t) work_free(t);
+    free(t);
+    return NULL;
+}
+
+int gal_onset_track_speed(gal_onset_track *w, const double *phi, const double *omega, const double *Ka,
+                          const double *Ca, const double *Cs, gal_onset_shares_fn shares, void *ctx,
+                          gal_onset_speed *sp, gal_onset *out, int i)
+{
+    size_t nb = (size_t)w->nb;
+    memcpy(w->phi, phi, (size_t)w->n * nb * sizeof(double));
+    memcpy(w->omega, omega, nb * sizeof(double));
+    memcpy(w->Ka, Ka, nb * nb * sizeof(double));
+    memcpy(w->Ca, Ca, nb * nb * sizeof(double));
+    memcpy(w->Cs, Cs, nb * nb * sizeof(double));
+    int st = modal_eig(w, sp);
+    if (!st) follow(w, shares, ctx, out, i);
+    return st;
 }

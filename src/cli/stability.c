@@ -61,7 +61,8 @@ static int run(const gal_scene *sc, const gal_aero_table *t, const char *outdir,
     int st = vertical_modes(&S);
     if (st) return st;
     gal_onset O;
-    if ((st = gal_scene_onset(sc, &O))) return st;
+    int explicit_bundle = sc->bundle.subconductors > 1 && sc->bundle.explicit_model;
+    if ((st = explicit_bundle ? gal_bundle_scene_onset(sc, &O) : gal_scene_onset(sc, &O))) return st;
     gal_stability_params p;
     gal_stability_scene_params(sc, &p);
     p.nmodes = S.nm;

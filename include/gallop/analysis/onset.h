@@ -112,6 +112,29 @@ void gal_onset_clear(gal_onset *r);
 int gal_onset_aero_matrices(const gal_rod *rod, const double *q, const gal_loads *L, const double *phi, int n,
                             double *Ka, double *Ca);
 
+/* Swing, twist, angle of attack and the table's criteria (den_hartog, nigol_dcm) at mid-span of the
+ * rod's configuration q under L at L->speed. */
+void gal_onset_measures(const gal_rod *rod, const double *q, const gal_loads *L, gal_onset_speed *sp);
+
+/* ---- the eigen-sweep on another discretization (the explicit bundle's, bundle/onset.c) ----
+ * The caller finds the equilibrium and the basis at each speed; the track does what
+ * gal_onset_analyse does from there: K_t = diag(omega^2) + Ka, C_t = Cs + Ca, K_t's smallest
+ * eigenvalue and the linear divergence speed (sp->kt_min, divergence_linear), the state matrix's
+ * eigenvalues, the followed modes of row i of out->m (MAC weighted by mdiag, shares by `shares`).
+ * gal_onset_conclude then finds the onset, restabilization and divergence over out's speeds (the
+ * rows whose sp->ok is 0 set to NaN first). */
+typedef void (*gal_onset_shares_fn)(void *ctx, const double *ure, const double *uim, double share[3]);
+typedef struct gal_onset_track gal_onset_track;
+/* n dofs of the shapes, nb basis modes, nm followed; mdiag (n) copied. NULL with a message. */
+gal_onset_track *gal_onset_track_alloc(int n, int nb, int nm, const double *mdiag);
+gal_onset_track *gal_onset_track_free(gal_onset_track *t);
+/* phi: n x nb column-major, mass-normalized natural modes of circular frequencies omega (nb); Ka,
+ * Ca, Cs: nb x nb column-major (aerodynamic stiffness, aerodynamic and structural damping). */
+int gal_onset_track_speed(gal_onset_track *t, const double *phi, const double *omega, const double *Ka,
+                          const double *Ca, const double *Cs, gal_onset_shares_fn shares, void *ctx,
+                          gal_onset_speed *sp, gal_onset *out, int i);
+void gal_onset_conclude(gal_onset *out);
+
 #ifdef __cplusplus
 }
 #endif

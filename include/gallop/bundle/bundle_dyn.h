@@ -18,6 +18,7 @@
 #ifndef GALLOP_BUNDLE_DYN_H
 #define GALLOP_BUNDLE_DYN_H
 
+#include "gallop/analysis/onset.h"
 #include "gallop/bundle/bundle.h"
 #include "gallop/loads/loads.h"
 #include "gallop/run/sim.h"
@@ -113,6 +114,21 @@ int gal_bundle_simulate(const struct gal_model *m, const struct gal_run_opts *o,
 void gal_bundle_sim_result_clear(gal_bundle_sim_result *res);
 /* DIR/trace.csv and DIR/summary.json of the run, one output set (README "Bundles"). */
 int gal_bundle_sim_write(const char *dir, const gal_scene *sc, const gal_bundle_sim_result *res);
+
+/* The coupled galloping onset of the explicit bundle (`gallop stability` on [bundle] model =
+ * explicit; README "Bundles"): at each speed of o's range the mean-wind equilibrium of the assembled
+ * system (Newton with its structural tangent, from the previous speed's), its lowest o->basis
+ * natural modes there, the loads of gal_bundle_loads_eval (every sub-conductor at its own relative
+ * wind, the wake factor) linearized about it by central differences along each mode (stiffness:
+ * the state stepped by gal_bundle_step, the map T re-evaluated; damping: the system's velocity),
+ * the Rayleigh damping of gal_bundle_simulate projected, and analysis/onset.h's eigen-sweep
+ * (gal_onset_track). The speed's columns are sub-conductor 1's at mid-span (swing, twist, angle of
+ * attack); Den Hartog's column with one sub-conductor's mass and the lowest vertical bundle mode;
+ * Nigol's is NaN (a bundle's torsion is not a single section's). No continuation through folds:
+ * the speeds above one without an equilibrium have ok = 0. */
+int gal_bundle_onset(const struct gal_model *m, const gal_onset_opts *o, gal_onset *out);
+/* The same for a scene ([stability] speed_min, speed_max, speed_step; the default basis). */
+int gal_bundle_scene_onset(const gal_scene *sc, gal_onset *O);
 
 #ifdef __cplusplus
 }
