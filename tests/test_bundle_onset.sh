@@ -37,5 +37,5 @@ for U in 1.5 5; do
         ok "at $U m/s: full-model growth $g 1/s, linear $l 1/s (same sign, within 25%)" ||
         bad "at $U m/s: full-model growth '$g' 1/s against linear '$l' 1/s"
 done
-echo "$pass passed, $fail failed"
+echo "#summary $pass $fail"
 [ $fail -eq 0 ]
