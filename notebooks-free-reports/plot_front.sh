@@ -31,7 +31,7 @@ set key top right
 set grid
 plot "$dir/front_points.dat" using 1:(\$3 == 0 ? \$2 : 1/0) with points pt 7 ps 1 title "configurations", \
      "$dir/front_points.dat" using 1:(\$3 == 1 ? \$2 : 1/0) with points pt 6 ps 1 title "one effect off", \
-     "$dir/front_points.dat" using 1:(\$3 == 2 ? \$2 : 1/0) with points pt 9 ps 1.3 title "Newton tolerance (simulation.newton_tolerance)", \
+     "$dir/front_points.dat" using 1:(\$3 == 2 ? \$2 : 1/0) with points pt 9 ps 1.3 title "Newton tolerance (one model, one value)", \
      "$dir/front_line.dat" using 1:2 with linespoints lw 2 pt 5 title "Pareto front", \
      "$dir/front_chosen.dat" using 1:2 with points pt 6 ps 3 lw 2 title "chosen for the tolerance"
 GP
