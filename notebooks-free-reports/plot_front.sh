@@ -9,8 +9,10 @@ dir=${1:?usage: plot_front.sh DIR [REPORT.md]}
 md=${2:-$dir/front.md}
 csv=$dir/front.csv
 [ -s "$csv" ] || { echo "plot_front.sh: no $csv" >&2; exit 1; }
-# label,group,model,elements,modes,time_step_s,effect_off,err x6,error,wall_time_s,on_front,chosen
-awk -F, 'NR > 1 && $14 > 0 && $14 != "inf" && $14 != "nan" { print $15, $14, ($7 == "" ? 0 : 1), $16, $17, $1 }' "$csv" \
+# label,group,model,elements,modes,time_step_s,effect_off,err x6,error,wall_time_s,on_front,chosen,
+# newton_tolerance,newton_iterations; kind: 0 configuration, 1 one effect off, 2 a Newton tolerance
+awk -F, 'NR > 1 && $14 > 0 && $14 != "inf" && $14 != "nan" {
+         print $15, $14, ($7 != "" ? 1 : $2 == "newton_tolerance" ? 2 : 0), $16, $17, $1 }' "$csv" \
     > "$dir/front_points.dat"
 sort -g -k1,1 "$dir/front_points.dat" | awk '$4 == 1' > "$dir/front_line.dat"
 awk '$5 == 1' "$dir/front_points.dat" > "$dir/front_chosen.dat"
@@ -29,6 +31,7 @@ set key top right
 set grid
 plot "$dir/front_points.dat" using 1:(\$3 == 0 ? \$2 : 1/0) with points pt 7 ps 1 title "configurations", \
      "$dir/front_points.dat" using 1:(\$3 == 1 ? \$2 : 1/0) with points pt 6 ps 1 title "one effect off", \
+     "$dir/front_points.dat" using 1:(\$3 == 2 ? \$2 : 1/0) with points pt 9 ps 1.3 title "Newton tolerance (one model, one value)", \
      "$dir/front_line.dat" using 1:2 with linespoints lw 2 pt 5 title "Pareto front", \
      "$dir/front_chosen.dat" using 1:2 with points pt 6 ps 3 lw 2 title "chosen for the tolerance"
 GP

@@ -50,7 +50,7 @@ ls "$tmp/el" | grep -q tmp && bad "temporary files left behind" || ok "no tempor
 # wind; the full model is slow on coarse meshes) ----
 short=(--set simulation.duration=30 --set wind.speed=12 --set ice.attack_angle=20 --set span.horizontal_tension=25000
        --set conductor.damping_ratio=0.005)
-if "$GALLOP" accuracy data/scenes/iced_gallop.ini "${short[@]}" --study modes --study time_step \
+if "$GALLOP" accuracy data/scenes/iced_gallop.ini "${short[@]}" --study modes --study time_step --study newton_tolerance \
      --tolerance 0.05 -o "$tmp/dy" >"$tmp/out" 2>"$tmp/err"; then
   ok "dynamic studies exit 0"
 else
@@ -67,7 +67,7 @@ else
 fi
 c=$tmp/dy/accuracy.csv
 [ "$(head -n 1 "$c" 2>/dev/null)" = "$header" ] && ok "dynamic accuracy.csv header" || bad "dynamic header"
-for s in modes time_step effects; do
+for s in modes time_step effects newton_tolerance; do
   rows=$(awk -F, -v s="$s" 'NR > 1 && $1 == s' "$c" | wc -l)
   ch=$(awk -F, -v s="$s" 'NR > 1 && $1 == s && $6 == 1' "$c" | wc -l)
   [ "$rows" -ge 2 ] && ok "$s: $rows rows" || bad "$s: $rows rows"
@@ -80,6 +80,10 @@ awk -F, 'NR > 1 && $1 == "modes" && $2 == "model" && $3 == "full" && $4 == 0' "$
   && ok "modes: the full model is the reference" || bad "modes: no full reference row"
 awk -F, 'NR > 1 && $1 == "effects" && $2 == "effects.aero_damping" && $3 == "off" && $4 > 0.5' "$c" | grep -q . \
   && ok "effects: switching aero damping off stops the galloping (error > 50%)" || bad "effects: aero_damping row: $(grep aero_damping "$c")"
+# the Newton tolerance (full model): 1e-10 the reference, the looser ones scored against it
+awk -F, 'NR > 1 && $1 == "newton_tolerance" && $2 == "simulation.newton_tolerance" { n++; if ($3 == "1e-10" && $4 == 0) r = 1;
+         if ($3 == "0.001" && $4 != "inf" && $4 != "nan") l = 1 } END { exit !(n == 5 && r && l) }' "$c" \
+  && ok "newton_tolerance: 5 rows, 1e-10 the reference, 1e-3 scored" || bad "newton_tolerance rows: $(grep newton "$c")"
 grep -q '"steady_from_s"' "$tmp/dy/summary.json" && ok "summary.json gives the steady window" || bad "no steady_from_s"
 
 # ---- bad input: exit 2, nothing written ----
@@ -93,7 +97,7 @@ done
 # the retired tolerance study (simulation.tolerance, read by no integrator since both take fixed steps)
 "$GALLOP" accuracy data/scenes/drake_300m.ini --study tolerance -o "$tmp/bad" >/dev/null 2>"$tmp/err"
 rc=$?
-[ $rc -eq 2 ] && grep -q "no longer a study" "$tmp/err" && grep -q "time_step" "$tmp/err" && [ ! -e "$tmp/bad" ] \
+[ $rc -eq 2 ] && grep -q "no longer a study" "$tmp/err" && grep -q "time_step" "$tmp/err" && grep -q "study newton_tolerance" "$tmp/err" && [ ! -e "$tmp/bad" ] \
   && ok "--study tolerance: exit 2 naming what replaced it" || bad "--study tolerance: exit $rc: $(cat "$tmp/err")"
 # a computation that fails: a sag without gravity has no equilibrium (input) -- and an unreachable
 # dynamic measure: too few samples for the spectra is a failed computation (exit 1)

@@ -48,7 +48,7 @@ else
   bad "accuracy (front): exit $?: $(cat "$tmp/err")"
 fi
 c=$tmp/a/front.csv
-hdr='label,group,model,elements,modes,time_step_s,effect_off,error_frequency,error_vertical,error_horizontal,error_twist,error_tension,error_time_to_steady,error,wall_time_s,on_front,chosen'
+hdr='label,group,model,elements,modes,time_step_s,effect_off,error_frequency,error_vertical,error_horizontal,error_twist,error_tension,error_time_to_steady,error,wall_time_s,on_front,chosen,newton_tolerance,newton_iterations'
 [ "$(head -n 1 "$c" 2>/dev/null)" = "$hdr" ] && ok "front.csv header" || bad "front.csv header: $(head -n 1 "$c" 2>/dev/null)"
 # the reported frequency error of every full-model configuration against the closed form (not of
 # a reduced one: it halves its step where its Newton fails; tests/test_accuracy.c holds those to
@@ -97,6 +97,25 @@ for p in f["points"]:
         fail("%s is within E and cheaper than the chosen one" % p["label"])
 if not f["front"]: fail("empty front")
 PY
+# the integrator tolerance (simulation.newton_tolerance) is a choice of the study, for both models:
+# listed with its error and its Newton work; the loosest does less Newton work than the tightest
+python3 - "$j" <<'PY' && ok "newton_tolerance rows of both models: errors listed, 1e-3 does less Newton work than 1e-10" || bad "newton_tolerance rows: see above"
+import json, math, sys
+f = json.load(open(sys.argv[1]))["front"]
+def fail(msg): print("    " + msg); sys.exit(1)
+if f.get("base_newton_tolerance") != 1e-8: fail("base_newton_tolerance %s" % f.get("base_newton_tolerance"))
+for model in ("full", "reduced"):
+    pts = {p["newton_tolerance"]: p for p in f["points"] if p["group"] == "newton_tolerance" and p["label"].startswith(model)}
+    if sorted(pts) != [1e-10, 1e-6, 1e-4, 1e-3]: fail("%s: tolerances %s" % (model, sorted(pts)))
+    for t, p in pts.items():
+        if "failed" in p or p["error"] is None or not math.isfinite(p["error"]): fail("%s tol %g: error %s" % (model, t, p.get("error")))
+        if not ("tol=%.3g" % t) in p["label"]: fail("label %s" % p["label"])
+    if not (0 < pts[1e-3]["newton_iterations"] < pts[1e-10]["newton_iterations"]):
+        fail("%s: Newton iterations %d at 1e-3, %d at 1e-10" % (model, pts[1e-3]["newton_iterations"], pts[1e-10]["newton_iterations"]))
+PY
+awk -F, 'NR > 1 && $2 == "newton_tolerance" && $18 == 0.001 && $19 > 0' "$c" | grep -q . \
+  && ok "front.csv: newton_tolerance and newton_iterations columns" || bad "front.csv newton columns"
+grep -q "tol=0.001 N=" "$tmp/out" && ok "the table lists the tolerance rows" || bad "no tolerance rows in the table"
 grep -q "tolerance 2%: [a-z]* .*N=" "$tmp/out" && grep -q "check run reached an error of" "$tmp/out" \
   && ok "stdout states the chosen configuration, its error and time" || bad "stdout: $(tail -n 5 "$tmp/out")"
 # drag off: the string does not move, every measure is lost: never recommended off

@@ -16,7 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-const char *const gal_acc_study_names[GAL_ACC_NSTUDY] = {"elements", "modes", "time_step", "effects", "front"};
+const char *const gal_acc_study_names[GAL_ACC_NSTUDY] = {"elements",         "modes", "time_step", "effects",
+                                                            "newton_tolerance", "front"};
 
 void gal_accuracy_default_opts(gal_acc_opts *o)
 {
@@ -289,6 +290,11 @@ static void choose(gal_acc_result *r, gal_acc_study s)
                  "(%.3g s), with the mid-span vertical amplitude and frequency within %.3g%%", c->value,
                  c->wall_time_s, ratio, ref->value, ref->wall_time_s, 100 * c->error);
         break;
+    case GAL_ACC_NEWTON_TOL:
+        snprintf(S->buys, sizeof S->buys, "a full-model Newton tolerance of %s runs in %.3g s, %.3gx faster than %s "
+                 "(%.3g s), with the mid-span vertical amplitude and frequency within %.3g%%", c->value,
+                 c->wall_time_s, ratio, ref->value, ref->wall_time_s, 100 * c->error);
+        break;
     default:
         snprintf(S->buys, sizeof S->buys, "%s = off changes the mid-span vertical amplitude and frequency by %.3g%% "
                  "only and runs in %.3g s against %.3g s with every effect on", c->setting, 100 * c->error,
@@ -317,7 +323,8 @@ int gal_accuracy_run(const gal_scene *sc, const gal_acc_opts *opts, gal_acc_resu
     int st = GAL_OK;
     double fhi = 0;
     r->front.chosen = -1;
-    unsigned dyn = (1u << GAL_ACC_MODES) | (1u << GAL_ACC_TIME_STEP) | (1u << GAL_ACC_EFFECTS);
+    unsigned dyn = (1u << GAL_ACC_MODES) | (1u << GAL_ACC_TIME_STEP) | (1u << GAL_ACC_EFFECTS) |
+                   (1u << GAL_ACC_NEWTON_TOL);
     /* (the front study finds its own sampling) */
     /* the dynamic studies share the sampling of the scene's own run */
     gal_scene s = *sc;
@@ -335,6 +342,7 @@ int gal_accuracy_run(const gal_scene *sc, const gal_acc_opts *opts, gal_acc_resu
         case GAL_ACC_ELEMENTS: st = study_elements(sc, &o, r); break;
         case GAL_ACC_MODES: st = gal_acc_study_modes(&s, &o, r); break;
         case GAL_ACC_TIME_STEP: st = gal_acc_study_time_step(&s, &o, r, 1.0 / fhi); break;
+        case GAL_ACC_NEWTON_TOL: st = gal_acc_study_newton_tol(&s, &o, r); break;
         case GAL_ACC_FRONT: st = gal_acc_study_front(sc, &o, r); break;
         default: st = gal_acc_study_effects(&s, &o, r); break;
         }

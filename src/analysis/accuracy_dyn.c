@@ -107,16 +107,19 @@ int gal_acc_study_modes(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
     return GAL_OK;
 }
 
-/* the full model's time step swept on one shared set-up */
-int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, double T)
+/* one setting of a swept key of the full model */
+static void set_value(gal_scene *s, gal_acc_study which, double v)
 {
-    const gal_acc_study which = GAL_ACC_TIME_STEP;
+    if (which == GAL_ACC_TIME_STEP) s->simulation.time_step = v;
+    else s->simulation.newton_tolerance = v;
+}
+
+/* the full model's key (simulation.time_step or newton_tolerance) swept over val[0..nv-1] on one
+ * shared set-up, the last value the reference */
+static int full_sweep(gal_scene s, const gal_acc_opts *o, gal_acc_result *r, gal_acc_study which, const char *key,
+                      const double *val, int nv)
+{
     gal_acc_summary *S = &r->study[which];
-    gal_scene s = *sc;
-    static const int div[] = {10, 20, 40, 80, 160};               /* T / div */
-    int nv = 5;
-    s.simulation.output_interval = T / 10;  /* every step divides the sampling interval */
-    S->output_interval_s = s.simulation.output_interval;
     gal_sim_setup su;
     int st = gal_sim_setup_init(&su, &s, 1);
     if (st) { gal_sim_setup_clear(&su); return gal_error(st, "%s: set-up: %s", gal_acc_study_names[which], gal_error_message()); }
@@ -126,7 +129,7 @@ int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_
     /* from the finest setting down: the finest that runs is the reference (the requested one
      * unless it fails, which the summary then says), measured first for its steady window */
     for (int i = nv - 1; i >= 0; i--) {
-        s.simulation.time_step = T / div[i];
+        set_value(&s, which, val[i]);
         gal_sim_result res;
         ok[i] = !gal_sim_run(&su, GAL_MODEL_FULL, &res) &&
                 !dyn_measure(&res, ref < 0 ? -1 : d[ref].from, &d[i]);
@@ -135,8 +138,8 @@ int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_
             snprintf(why[i], sizeof why[i], "%s", gal_error_message());
             if (o->progress) fprintf(stderr, "accuracy: %s run %d failed: %s\n", gal_acc_study_names[which], i, gal_error_message());
             if (i == nv - 1)
-                snprintf(S->note, sizeof S->note, "the requested reference simulation.time_step = %.3g failed (%s); "
-                         "the finest setting that ran is the reference", T / div[i], gal_error_message());
+                snprintf(S->note, sizeof S->note, "the requested reference %s = %.3g failed (%s); "
+                         "the finest setting that ran is the reference", key, val[i], gal_error_message());
             continue;
         }
         if (ref < 0) ref = i, S->steady_from_s = d[i].from;
@@ -148,7 +151,7 @@ int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_
     }
     gal_sim_setup_clear(&su);
     for (int i = 0; i < nv; i++) {
-        gal_acc_row *w = gal_acc_row_add(r, which, "simulation.time_step", "%.6g", T / div[i]);
+        gal_acc_row *w = gal_acc_row_add(r, which, key, "%.6g", val[i]);
         if (!w) return gal_error(GAL_ENOMEM, "out of memory");
         if (ok[i]) dyn_fill(w, &d[i], &d[ref]);
         else w->error = INFINITY, snprintf(w->failed, sizeof w->failed, "%s", why[i]);
@@ -156,6 +159,25 @@ int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_
         gal_acc_progress(o, w);
     }
     return GAL_OK;
+}
+
+/* the full model's time step, T/10 .. T/160 */
+int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, double T)
+{
+    gal_scene s = *sc;
+    static const int div[] = {10, 20, 40, 80, 160};               /* T / div */
+    double val[5];
+    for (int i = 0; i < 5; i++) val[i] = T / div[i];
+    s.simulation.output_interval = T / 10;  /* every step divides the sampling interval */
+    r->study[GAL_ACC_TIME_STEP].output_interval_s = s.simulation.output_interval;
+    return full_sweep(s, o, r, GAL_ACC_TIME_STEP, "simulation.time_step", val, 5);
+}
+
+/* the full model's Newton tolerance, 1e-3 .. 1e-10 (the reference), at the scene's step */
+int gal_acc_study_newton_tol(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r)
+{
+    static const double val[] = {1e-3, 1e-4, 1e-6, 1e-8, 1e-10};
+    return full_sweep(*sc, o, r, GAL_ACC_NEWTON_TOL, "simulation.newton_tolerance", val, 5);
 }
 
 int gal_acc_study_effects(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r)

@@ -29,8 +29,12 @@ double gal_acc_budget_left(const acc_study *S)
 
 void gal_acc_config_label(const gal_acc_config *c, char *buf, size_t n)
 {
-    char m[32] = "full";
+    char m[56] = "full";
     if (c->reduced) snprintf(m, sizeof m, "reduced %d/%d/%d", c->modes[0], c->modes[1], c->modes[2]);
+    if (c->newton_tol > 0) { /* before N and h: they stay the label's last two words */
+        size_t l = strlen(m);
+        snprintf(m + l, sizeof m - l, " tol=%.3g", c->newton_tol);
+    }
     if (c->effect_off >= 0)
         snprintf(buf, n, "%s N=%d h=%.4g -%s", m, c->elements, c->time_step, gal_effect_names[c->effect_off]);
     else snprintf(buf, n, "%s N=%d h=%.4g", m, c->elements, c->time_step);
@@ -63,6 +67,7 @@ static void config_scene(const acc_study *S, const gal_acc_config *c, int seed, 
         s->model.on_invalid_warn = 1; /* an invalid run is scored, not dropped */
     }
     s->simulation.time_step = c->time_step;
+    if (c->newton_tol > 0) s->simulation.newton_tolerance = c->newton_tol;
     s->simulation.output_interval = S->F->output_interval_s;
     s->simulation.duration = S->duration;
     if (c->effect_off >= 0) s->effect[c->effect_off] = 0;
@@ -106,6 +111,7 @@ int gal_acc_config_run(acc_study *S, const gal_acc_config *c, double from, gal_a
         st = gal_sim_setup_init(&su, &s, 1);
         if (!st) st = gal_sim_run(&su, c->reduced ? GAL_MODEL_REDUCED : GAL_MODEL_FULL, &res);
         if (!st) st = measures_of(S, &res, fr, v, &fr);
+        p->newton_iterations += res.newton_iterations;
         gal_sim_result_clear(&res);
         gal_sim_setup_clear(&su);
         for (int j = 0; j < GAL_ACC_NMEAS && !st; j++) sum[j] += v[j] / ns, sq[j] += v[j] * v[j] / ns;
@@ -331,11 +337,12 @@ int gal_acc_study_front(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
     acc_study S = {sc, o, F, gal_wall_time(), 0, -1, {0}, sc->simulation.duration};
     F->chosen = -1;
     F->steady_from_s = NAN;
+    F->base_newton_tol = sc->simulation.newton_tolerance;
     S.turbulent = sc->effect[GAL_FX_TURBULENCE] && sc->wind.turbulence != GAL_TURB_NONE;
     F->nseeds = S.turbulent ? (o->seeds > 0 ? o->seeds : 3) : 1;
     S.own[0] = sc->model.modes_vertical, S.own[1] = sc->model.modes_horizontal;
     S.own[2] = sc->effect[GAL_FX_TORSION] ? sc->model.modes_torsional : 0;
-    gal_acc_config base = {0, 0, {S.own[0], S.own[1], S.own[2]}, 0, -1};
+    gal_acc_config base = {0, 0, {S.own[0], S.own[1], S.own[2]}, 0, -1, 0};
     int st = constants(&S, &base);
     if (st) return gal_error(st, "front: %s: %s", sc->path, gal_error_message());
     if (S.turbulent)

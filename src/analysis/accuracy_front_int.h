@@ -20,7 +20,8 @@ typedef struct acc_study {
 
 /* wall time left in the budget, s (+inf without one) */
 double gal_acc_budget_left(const acc_study *S);
-/* a configuration's label ("full N=80 h=0.0125", "reduced 3/2/1 N=80 h=0.0125", "-effect") */
+/* a configuration's label ("full N=80 h=0.0125", "reduced 3/2/1 N=80 h=0.0125", "full tol=1e-06 N=80
+ * h=0.0125", "-effect") */
 void gal_acc_config_label(const gal_acc_config *c, char *buf, size_t n);
 /* Run configuration c (every seed), measure over the reference's steady window (from < 0:
  * detected) into p->value and time it; a failed run keeps its reason in p->failed. */

@@ -19,6 +19,8 @@ void gal_acc_progress(const gal_acc_opts *o, const gal_acc_row *w);
 int gal_acc_study_modes(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);
 /* full-model time steps T/10 .. T/160, T the shortest selected period, s */
 int gal_acc_study_time_step(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r, double T);
+/* full-model simulation.newton_tolerance 1e-3 .. 1e-10 (the reference) at the scene's step */
+int gal_acc_study_newton_tol(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);
 /* the front study (accuracy_front.c, accuracy_pareto.c): r->front */
 int gal_acc_study_front(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);
 int gal_acc_study_effects(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r);

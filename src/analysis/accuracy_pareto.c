@@ -1,6 +1,7 @@
 /* accuracy_pareto.c: the choices of the front study (issue 20) measured against the converged
  * reference on the same wind: the model (full, reduced), elements, modes per family, time step,
- * each effect off, one at a time around the base configuration; then combined choices whose
+ * Newton's tolerance (simulation.newton_tolerance) of either model, each effect off, one at a
+ * time around the base configuration; then combined choices whose
  * errors are predicted additive (each measure shifted by the sum of the one-at-a-time shifts, the
  * wall time scaled by the product of their ratios), run where the front is least known (the
  * largest gap of the measured front in log-log); the Pareto front of the worst error against
@@ -21,7 +22,7 @@
 static int same_config(const gal_acc_config *a, const gal_acc_config *b)
 {
     return a->reduced == b->reduced && a->elements == b->elements && fabs(a->time_step / b->time_step - 1) < 1e-9 &&
-           a->effect_off == b->effect_off &&
+           a->effect_off == b->effect_off && a->newton_tol == b->newton_tol &&
            (!a->reduced || (a->modes[0] == b->modes[0] && a->modes[1] == b->modes[1] && a->modes[2] == b->modes[2]));
 }
 
@@ -78,6 +79,22 @@ static int run_point(acc_study *S, const char *group, const gal_acc_config *c)
 /* ======================================================================================
  * one choice at a time around the base */
 
+/* Newton's tolerance of the implicit step, full and reduced, at the base mesh and step (the
+ * scene's own value is the base's) */
+static const double newton_tols[] = {1e-10, 1e-6, 1e-4, 1e-3};
+
+static int tolerances(acc_study *S, const gal_acc_config *base)
+{
+    for (int r = 0; r < 2; r++)
+        for (size_t i = 0; i < sizeof newton_tols / sizeof newton_tols[0]; i++) {
+            if (fabs(newton_tols[i] / S->sc->simulation.newton_tolerance - 1) < 1e-9) continue;
+            gal_acc_config c = *base;
+            c.reduced = r, c.newton_tol = newton_tols[i];
+            if (run_point(S, "newton_tolerance", &c) == -2) return GAL_ENOMEM;
+        }
+    return GAL_OK;
+}
+
 static const int bases[][3] = {{1, 1, 1}, {2, 1, 1}, {2, 2, 1}, {3, 2, 1}, {3, 2, 2}, {4, 3, 2}};
 #define NBASES (int)(sizeof bases / sizeof bases[0])
 
@@ -111,6 +128,7 @@ static int one_at_a_time(acc_study *S, const gal_acc_config *base)
         c = *base, c.reduced = 1, c.time_step = base->time_step * mul[i];
         if (run_point(S, "time_step", &c) == -2) return GAL_ENOMEM;
     }
+    if (tolerances(S, base)) return GAL_ENOMEM;
     /* each effect the scene has, switched off in the full model */
     static const gal_effect fx[] = {GAL_FX_ICE_ECCENTRICITY, GAL_FX_AERO_DRAG, GAL_FX_AERO_LIFT, GAL_FX_AERO_MOMENT,
                                     GAL_FX_BENDING, GAL_FX_TORSION, GAL_FX_AERO_DAMPING, GAL_FX_TURBULENCE,
@@ -213,11 +231,12 @@ static int next_combined(acc_study *S, const gal_acc_config *base, gal_acc_confi
             fabs(cb->time_step / base->time_step - 1) > 1e-9) continue; /* a model/basis choice */
         for (int ie = 0; ie < F->n; ie++) {
             const gal_acc_config *ce = &F->pt[ie].c;
-            if (F->pt[ie].failed[0] || ce->reduced || ce->effect_off >= 0 ||
+            if (F->pt[ie].failed[0] || ce->reduced || ce->effect_off >= 0 || ce->newton_tol != base->newton_tol ||
                 fabs(ce->time_step / base->time_step - 1) > 1e-9) continue; /* a mesh of the full model */
             for (int ih = 0; ih < F->n; ih++) {
                 const gal_acc_config *ch = &F->pt[ih].c;
                 if (F->pt[ih].failed[0] || ch->reduced != cb->reduced || ch->effect_off >= 0 ||
+                    ch->newton_tol != base->newton_tol ||
                     ch->elements != base->elements) continue; /* a step of the same model */
                 if (cb->reduced && (ir0 < 0 || ch->modes[0] != S->own[0] || ch->modes[1] != S->own[1] ||
                                     ch->modes[2] != S->own[2])) continue;

@@ -31,7 +31,9 @@ static int add_studies(const char *list, unsigned *mask)
         if (!strcmp(t, "tolerance"))
             return bad("--study tolerance: no longer a study: it swept simulation.tolerance, which no integrator "
                        "reads since both models take fixed steps (the key is refused too); what replaced it: "
-                       "the front study (the default) and --study time_step measure the error of the step", NULL);
+                       "the front study (the default) and --study time_step measure the error of the step, and --study "
+                       "newton_tolerance (and the front's newton_tolerance rows) that of simulation.newton_tolerance, "
+                       "the implicit step's Newton tolerance", NULL);
         for (int s = 0; s < GAL_ACC_NSTUDY; s++)
             if (!strcmp(t, gal_acc_study_names[s])) k = s;
         if (k < 0) return bad("--study: unknown study", t);

@@ -36,7 +36,7 @@ const gal_cli_command gal_cli_commands[] = {
      "writes DIR/accuracy.csv, front.csv and summary.json; a table on stdout\n",
      {{"study", 0, "NAME[,NAME...]", 1,
        "run these studies: front (default), or the older one-at-a-time elements, modes, time_step, "
-       "effects (repeatable)"},
+       "effects, newton_tolerance (repeatable)"},
       {"tolerance", 0, "E", 0, "relative error the chosen setting must meet, in (0, 1) (default: 0.01)"},
       {"budget", 0, "SECONDS", 0, "front: wall-time limit of the study, spent where the front is least known"},
       {"seeds", 0, "N", 0, "front, turbulent wind: seeds the statistics are averaged over, 1 to 64 (default: 3)"},

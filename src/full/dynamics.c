@@ -142,8 +142,10 @@ static void predict(gal_dyn *d, double h)
     }
 }
 
-/* The convergence test's force tolerance for a step of size h, N. */
-static double force_tolerance(const gal_dyn *d, double h)
+/* The convergence test's force tolerance for a step of size h at the relative tolerance rel, N:
+ * rel times the step's force scale (the largest elastic + load entry at its start, at least the
+ * weight of one node), not below the round-off floors. */
+static double force_tolerance(const gal_dyn *d, double h, double rel)
 {
     const gal_rod *rod = d->rod;
     int n = rod->ndof;
@@ -159,7 +161,7 @@ static double force_tolerance(const gal_dyn *d, double h)
      * relative tolerance on a 200 m span) */
     for (int j = 0; j < n; j++) qm = fmax(qm, fabs(d->q[rod->free_q[j]]) * d->mdiag[j]);
     double inertia = 20 * DBL_EPSILON * qm * (1 - d->am) / (d->beta * h * h);
-    return fmax(d->o.newton_tol * scale, fmax(elastic, inertia));
+    return fmax(rel * scale, fmax(elastic, inertia));
 }
 
 /* The residual R at the iterate q1 of a step of size h into d->r (a1, v1, the elastic forces
@@ -255,12 +257,16 @@ static int refactor(gal_dyn *d, double h, double t1)
 /* One step of size h from the current state; on failure the state is unchanged. Modified Newton:
  * the factorization of an earlier iterate (or step) is kept while the residual falls by at least
  * GAL_DYN_RATE per iteration; when it falls slower, the tangent is evaluated at the iterate and
- * factored again (and always when h changes). */
+ * factored again (and always when h changes). Converged after a correction whose residual is
+ * within GAL_NEWTON_TOL_STRICT (or a tighter newton_tol); with a looser newton_tol, within it only
+ * when that correction reduced the residual: a growing (diverging) iteration is not accepted, it
+ * goes on to fail and the step is halved. */
 static int try_step(gal_dyn *d, double h)
 {
     const gal_rod *rod = d->rod;
     int n = rod->ndof, st;
-    double t1 = d->t + h, tol = force_tolerance(d, h), rprev = INFINITY;
+    double t1 = d->t + h, rprev = INFINITY, tol = force_tolerance(d, h, d->o.newton_tol);
+    double strict = force_tolerance(d, h, fmin(d->o.newton_tol, GAL_NEWTON_TOL_STRICT));
     predict(d, h);
     for (int it = 0; it < d->o.max_newton; it++) {
         double rn;
@@ -270,7 +276,7 @@ static int try_step(gal_dyn *d, double h)
             return gal_error(GAL_EFAIL, "dynamics: the residual is not finite at t = %.6g s (step %ld, "
                              "Newton iteration %d): the %s", t1, d->steps + 1, it, bad_term(d));
         d->newton_iterations++;
-        if (rn <= tol && it > 0) {
+        if (it > 0 && (rn <= strict || (rn <= tol && rn < rprev))) {
             accept(d, t1);
             return GAL_OK;
         }

@@ -16,7 +16,13 @@ static void csv_num(FILE *fp, double v)
     else fprintf(fp, "%.6g", v);
 }
 
-static void csv_point(FILE *fp, const gal_acc_point *p, int chosen)
+/* the Newton tolerance a point ran at (its own, else the scene's) */
+static double point_tol(const gal_acc_front *F, const gal_acc_point *p)
+{
+    return p->c.newton_tol > 0 ? p->c.newton_tol : F->base_newton_tol;
+}
+
+static void csv_point(FILE *fp, const gal_acc_front *F, const gal_acc_point *p, int chosen)
 {
     const gal_acc_config *c = &p->c;
     fprintf(fp, "%s,%s,%s,%d,", p->label, p->group, c->reduced ? "reduced" : "full", c->elements);
@@ -24,7 +30,7 @@ static void csv_point(FILE *fp, const gal_acc_point *p, int chosen)
     fprintf(fp, ",%.6g,%s", c->time_step, c->effect_off >= 0 ? gal_effect_names[c->effect_off] : "");
     for (int k = 0; k < GAL_ACC_NMEAS; k++) fputc(',', fp), csv_num(fp, p->err[k]);
     fputc(',', fp), csv_num(fp, p->error);
-    fprintf(fp, ",%.6g,%d,%d\n", p->wall_time_s, p->on_front, chosen);
+    fprintf(fp, ",%.6g,%d,%d,%.6g,%ld\n", p->wall_time_s, p->on_front, chosen, point_tol(F, p), p->newton_iterations);
 }
 
 int gal_acc_front_csv(gal_outset *o, const gal_acc_result *r)
@@ -34,18 +40,20 @@ int gal_acc_front_csv(gal_outset *o, const gal_acc_result *r)
     if (!fp) return GAL_EIO;
     fprintf(fp, "label,group,model,elements,modes,time_step_s,effect_off");
     for (int k = 0; k < GAL_ACC_NMEAS; k++) fprintf(fp, ",error_%s", gal_acc_measure_names[k]);
-    fprintf(fp, ",error,wall_time_s,on_front,chosen\n");
-    for (int i = 0; i < F->n; i++) csv_point(fp, F->pt + i, i == F->chosen);
+    fprintf(fp, ",error,wall_time_s,on_front,chosen,newton_tolerance,newton_iterations\n");
+    for (int i = 0; i < F->n; i++) csv_point(fp, F, F->pt + i, i == F->chosen);
     return gal_outset_close(o, fp);
 }
 
-static void json_point(gal_json *j, const gal_acc_point *p)
+static void json_point(gal_json *j, const gal_acc_front *F, const gal_acc_point *p)
 {
     gal_json_obj_begin(j);
     gal_json_kv_str(j, "label", p->label);
     gal_json_kv_str(j, "group", p->group);
     gal_json_kv_num(j, "error", p->error);
     gal_json_kv_num(j, "wall_time_s", p->wall_time_s);
+    gal_json_kv_num(j, "newton_tolerance", point_tol(F, p));
+    gal_json_kv_int(j, "newton_iterations", p->newton_iterations);
     gal_json_key(j, "errors");
     gal_json_obj_begin(j);
     for (int k = 0; k < GAL_ACC_NMEAS; k++) gal_json_kv_num(j, gal_acc_measure_names[k], p->err[k]);
@@ -104,14 +112,15 @@ void gal_acc_front_json(gal_json *j, const gal_acc_result *r)
     gal_json_kv_num(j, "steady_from_s", F->steady_from_s);
     gal_json_kv_int(j, "base_elements", F->base_elements);
     gal_json_kv_num(j, "base_time_step_s", F->base_time_step_s);
+    gal_json_kv_num(j, "base_newton_tolerance", F->base_newton_tol);
     gal_json_kv_int(j, "seeds", F->nseeds);
     gal_json_key(j, "reference");
     json_reference(j, F);
     gal_json_key(j, "chosen");
-    if (F->chosen >= 0) json_point(j, F->pt + F->chosen);
+    if (F->chosen >= 0) json_point(j, F, F->pt + F->chosen);
     else gal_json_num(j, NAN);
     gal_json_key(j, "check");
-    if (F->checked) json_point(j, &F->check);
+    if (F->checked) json_point(j, F, &F->check);
     else gal_json_num(j, NAN);
     gal_json_kv_str(j, "effects", F->effects);
     if (F->note[0]) gal_json_kv_str(j, "note", F->note);
@@ -122,7 +131,7 @@ void gal_acc_front_json(gal_json *j, const gal_acc_result *r)
     gal_json_arr_end(j);
     gal_json_key(j, "points");
     gal_json_arr_begin(j);
-    for (int i = 0; i < F->n; i++) json_point(j, F->pt + i);
+    for (int i = 0; i < F->n; i++) json_point(j, F, F->pt + i);
     gal_json_arr_end(j);
     gal_json_obj_end(j);
 }
@@ -130,13 +139,14 @@ void gal_acc_front_json(gal_json *j, const gal_acc_result *r)
 void gal_acc_front_print(FILE *fp, const gal_acc_result *r)
 {
     const gal_acc_front *F = &r->front;
-    fprintf(fp, "%-42s %-9s %8s %8s %8s %8s %8s %8s %9s %9s\n", "configuration", "group", "freq %", "vert %", "horiz %",
-            "twist %", "tens %", "steady %", "worst %", "wall s");
+    fprintf(fp, "%-52s %-9s %8s %8s %8s %8s %8s %8s %9s %9s %8s\n", "configuration", "group", "freq %", "vert %",
+            "horiz %", "twist %", "tens %", "steady %", "worst %", "wall s", "newton");
     for (int i = 0; i < F->n; i++) {
         const gal_acc_point *p = F->pt + i;
-        fprintf(fp, "%-42s %-9s", p->label, p->group);
+        fprintf(fp, "%-52s %-9s", p->label, strcmp(p->group, "newton_tolerance") ? p->group : "newton");
         for (int k = 0; k < GAL_ACC_NMEAS; k++) fprintf(fp, " %8.3g", 100 * p->err[k]);
-        fprintf(fp, " %9.3g %9.3g %s%s\n", 100 * p->error, p->wall_time_s, p->on_front ? "front" : "",
+        fprintf(fp, " %9.3g %9.3g %8ld %s%s\n", 100 * p->error, p->wall_time_s, p->newton_iterations,
+                p->on_front ? "front" : "",
                 i == F->chosen ? " <- chosen" : p->failed[0] ? " (failed: see summary.json)" : "");
     }
     fprintf(fp, "\nreference: %d levels, finest %d elements and step %.4g s, %s; estimated error:",

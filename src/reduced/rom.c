@@ -277,8 +277,11 @@ static void discrete_gradient(gal_rom *m)
 }
 
 /* Residual at the generalized mid-point into m->res; returns its largest entry over the Newton
- * tolerance (converged at <= 1). With rho_inf = 1 the internal force is the discrete gradient. */
-static double residual(gal_rom *m)
+ * tolerance newton_tol times the step's force scale (the largest |fi1| + |fe1| entry, at least the
+ * projected weights fscale; not below the round-off floor ffloor), converged at <= 1, and into
+ * *strict the same over GAL_NEWTON_TOL_STRICT's (or a tighter newton_tol's), the largest entry itself into *raw. With
+ * rho_inf = 1 the internal force is the discrete gradient. */
+static double residual(gal_rom *m, double *strict, double *raw)
 {
     int r = m->r;
     double am = m->am, af = m->af, rn = 0, sc = 0;
@@ -295,7 +298,9 @@ static double residual(gal_rom *m)
         rn = fmax(rn, fabs(m->res[i]));
         sc = fmax(sc, fabs(m->fi1[i]) + fabs(m->fe1[i]));
     }
-    return rn / fmax(m->o.newton_tol * fmax(sc, m->fscale), m->ffloor);
+    double tol = m->o.newton_tol, ts = fmin(tol, GAL_NEWTON_TOL_STRICT);
+    *strict = rn / fmax(ts * fmax(sc, m->fscale), m->ffloor), *raw = rn;
+    return rn / fmax(tol * fmax(sc, m->fscale), m->ffloor);
 }
 
 /* The iteration matrix J = (1-am) I + (1-af) (gamma h Cr + beta h^2 Kr), LU-factored. The loads'
@@ -328,20 +333,22 @@ static int newton(gal_rom *m, double h)
      * converges fast; a fresh tangent whenever an iteration did not gain a factor of 10 (the
      * stretching directions are strongly nonlinear) */
     int it, conv = 0, fresh = !(m->o.reuse_tangent && m->hJ == h), kept = !fresh;
-    double prev = INFINITY;
+    double prev = INFINITY, rawprev = INFINITY;
     for (it = 0; it < m->o.max_newton; it++) {
         newmark(m, h);
         if ((st = internal(m, m->x1, m->fi1, fresh ? m->Kr : NULL))) break;
         if ((st = external(m, t1, m->x1, m->v1, m->fe1))) break;
         if (m->qm && m->qm->inertia) gal_rom_qm_end(m, h);
-        double rn = residual(m);
-        if (rn <= 1) { conv = 1; break; }
+        double rs, raw, rn = residual(m, &rs, &raw);
+        /* as the full model (dynamics.c): within a looser tolerance than GAL_NEWTON_TOL_STRICT's
+         * only after a correction that reduced the residual */
+        if (rs <= 1 || (it > 0 && rn <= 1 && raw < rawprev)) { conv = 1; break; }
         if (!isfinite(rn)) { st = gal_error(GAL_EFAIL, "reduced model: the residual is not finite"); break; }
         if (!fresh && (rn > m->o.newton_contraction * prev || (kept && it >= m->o.newton_kept_max))) {
             fresh = 1, kept = 0;
             if ((st = internal(m, m->x1, m->fi1, m->Kr))) break;
         }
-        prev = rn;
+        prev = rn, rawprev = raw;
         if (fresh) {
             if ((st = iteration_matrix(m, h))) break;
             fresh = 0;

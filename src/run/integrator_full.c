@@ -48,6 +48,7 @@ static int full_alloc(const gal_model *m, const gal_data *d, const gal_run_opts 
     int sub = (int)ceil(dt_out / h - 1e-9);
     go.h = dt_out / sub;
     go.rho_inf = o->rho_inf;
+    if (o->newton_tol > 0) go.newton_tol = o->newton_tol;
     go.damping = d->damping;
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.ctx = (void *)&d->loads; /* read only */

@@ -58,6 +58,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     gal_rom_default_opts(&ro);
     ro.h = dt_out / sub;
     ro.rho_inf = o->rho_inf;
+    if (o->newton_tol > 0) ro.newton_tol = o->newton_tol;
     ro.damping = d->damping; /* the structural damping of the pipeline */
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */

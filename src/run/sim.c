@@ -22,6 +22,7 @@ void gal_run_opts_from_scene(const gal_scene *sc, gal_run_opts *o)
     o->time_step = sc->simulation.time_step;
     o->output_interval = sc->simulation.output_interval;
     o->rho_inf = sc->simulation.rho_inf;
+    o->newton_tol = sc->simulation.newton_tolerance;
 }
 
 /* The output interval: chosen from the highest selected mode fhi (Hz), or the scene's when it

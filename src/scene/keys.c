@@ -117,6 +117,8 @@ const keydef scn_keys[K_COUNT] = {
     NUM("simulation", "output_interval", simulation.output_interval, 0, 0, 10, 0, "s, trace sampling; 0 = chosen"),
     NUM("simulation", "rho_inf", simulation.rho_inf, 0, 0, 1, 0,
         "-, full model: spectral radius at infinite frequency (1 = no numerical dissipation)"),
+    NUM("simulation", "newton_tolerance", simulation.newton_tolerance, 1e-14, 0, 1e-2, 0,
+        "-, both models' implicit step: Newton's largest residual over the step's force scale"),
     {"simulation", "start", T_ENUM, 0, 0, 0, 0, 0, 1.0,
      "rest | mean_wind (rest: the wind ramps in over wind_ramp; mean_wind: from the equilibrium under the mean wind)",
      scn_start_names},

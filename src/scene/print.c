@@ -165,6 +165,7 @@ static void print_model_simulation_output(const gal_scene *sc, FILE *fp)
     put_key(fp, sc, K_REVERSE);
     put_key(fp, sc, K_OUTDT);
     put_key(fp, sc, K_RHOINF);
+    put_key(fp, sc, K_NEWTONTOL);
     fprintf(fp, "start = %s ; rest | mean_wind\n", scn_start_names[sc->simulation.start_mean_wind ? 1 : 0]);
 
     fprintf(fp, "\n[stability]\n");

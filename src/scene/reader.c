@@ -180,6 +180,7 @@ static void defaults(gal_scene *sc)
     sc->simulation.wind_reverse_time = 0;
     sc->simulation.output_interval = 0;
     sc->simulation.rho_inf = 0.9;
+    sc->simulation.newton_tolerance = 1e-8;
     sc->stability.speed_min = 0.5; /* analysis/onset.h's GAL_ONSET_SPEED_MIN, _MAX, _STEP */
     sc->stability.speed_max = 20;
     sc->stability.speed_step = 0.25;

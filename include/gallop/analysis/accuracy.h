@@ -17,6 +17,7 @@ typedef enum {
     GAL_ACC_MODES,     /* reduced basis size against one full-model run */
     GAL_ACC_TIME_STEP, /* full model: simulation.time_step = T/10 .. T/80 against T/160 */
     GAL_ACC_EFFECTS,   /* reduced model with one effect off at a time against all on */
+    GAL_ACC_NEWTON_TOL,/* full model: simulation.newton_tolerance = 1e-3 .. 1e-8 against 1e-10 */
     GAL_ACC_FRONT,     /* every choice against a converged full-model reference: the Pareto front
                         * of error against wall time (accuracy_front.c; the default study) */
     GAL_ACC_NSTUDY
@@ -90,17 +91,20 @@ typedef struct gal_acc_config {
     int modes[3];         /* reduced: modes vertical, horizontal, torsional */
     double time_step;     /* s (divides the study's output interval) */
     int effect_off;       /* a gal_effect switched off, or -1 */
+    double newton_tol;    /* simulation.newton_tolerance; 0: the scene's */
 } gal_acc_config;
 
 typedef struct gal_acc_point {
     gal_acc_config c;
     char label[96];       /* e.g. "full N=80 h=0.0125", "reduced 3/2/1 N=80 h=0.0125", "full -aero_lift" */
-    char group[16];       /* what it varies: reference, model, elements, time_step, modes, effect, combined */
+    char group[24];       /* what it varies: reference, model, elements, time_step, newton_tolerance,
+                           * modes, effect, combined */
     double value[GAL_ACC_NMEAS]; /* the measures (NaN: not measured) */
     double err[GAL_ACC_NMEAS];   /* relative error against the reference (NaN: not scored) */
     double spread[GAL_ACC_NMEAS];/* over the seeds: the standard error of the mean, relative (NaN: one seed) */
     double error;         /* the worst scored measure (+inf when the run failed) */
     double wall_time_s;   /* set-up (model, statics, modes) + integration, all seeds */
+    long newton_iterations; /* the integrator's, all seeds */
     int on_front;         /* 1: no other point is both cheaper and at least as accurate */
     int predicted;        /* combined point chosen from a prediction (additive errors) */
     double predicted_error, predicted_time_s;
@@ -134,6 +138,7 @@ typedef struct gal_acc_front {
     char ref_note[256];
     int nseeds;
     double output_interval_s, steady_from_s, base_time_step_s;
+    double base_newton_tol;               /* the scene's simulation.newton_tolerance */
     int base_elements;
     /* --tolerance: the cheapest point within it, checked by a second run */
     int chosen;                           /* index, -1 none */

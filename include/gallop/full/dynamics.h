@@ -19,12 +19,19 @@ extern "C" {
 /* Modified Newton: the factorization is kept while each iteration divides the residual by
  * 1/GAL_DYN_RATE at least. */
 #define GAL_DYN_RATE 0.1
+/* A Newton residual within this relative tolerance (the default of simulation.newton_tolerance)
+ * is converged whatever the iteration before it did; above it (a looser newton_tol) only after a
+ * correction that reduced the residual. Shared by the full (dynamics.h) and reduced (rom.h) steps. */
+#ifndef GAL_NEWTON_TOL_STRICT
+#define GAL_NEWTON_TOL_STRICT 1e-8
+#endif
 
 typedef struct gal_dyn_opts {
     double h;            /* s, time step */
     double rho_inf;      /* spectral radius at infinite frequency, [0, 1]; 1: no dissipation */
     const gal_damping *damping; /* the structural damping C (not owned; NULL: none) */
-    double newton_tol;   /* relative residual; default 1e-8 */
+    double newton_tol;   /* relative residual (over the step's force scale); default 1e-8
+                          * (simulation.newton_tolerance) */
     int max_newton;      /* per step; default 20 */
     int max_halvings;    /* step halvings on a failed step before giving up; default 6 */
 } gal_dyn_opts;

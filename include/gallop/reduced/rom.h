@@ -27,6 +27,13 @@
 extern "C" {
 #endif
 
+/* A Newton residual within this relative tolerance (the default of simulation.newton_tolerance)
+ * is converged whatever the iteration before it did; above it (a looser newton_tol) only after a
+ * correction that reduced the residual. Shared by the full (dynamics.h) and reduced (rom.h) steps. */
+#ifndef GAL_NEWTON_TOL_STRICT
+#define GAL_NEWTON_TOL_STRICT 1e-8
+#endif
+
 typedef struct gal_rom_opts {
     int derivatives;        /* 1: add the static modal derivatives (default); 0: linear modes only */
     int manifold;           /* 1: the modal derivatives as the quadratic term of a manifold

@@ -25,6 +25,7 @@ typedef struct gal_run_opts {
     double time_step;        /* s, full model; 0: chosen from the highest selected mode */
     double output_interval;  /* s; 0: chosen */
     double rho_inf;          /* -, full model's numerical dissipation (1 = none) */
+    double newton_tol;       /* -, both models' Newton tolerance (dynamics.h, rom.h); <= 0: 1e-8 */
 } gal_run_opts;
 
 /* What an integrator counts. */

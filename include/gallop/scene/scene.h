@@ -157,6 +157,7 @@ typedef struct gal_scene {
         double wind_reverse_time; /* s: the wind reverses at this time; 0 = never */
         double output_interval;   /* s; 0 = chosen */
         double rho_inf;           /* -, full model's numerical dissipation (1 = none) */
+        double newton_tolerance;  /* -, both models' Newton: residual over the step's force scale */
         int start_mean_wind;      /* 0: from rest, the wind ramped in; 1: from the equilibrium under
                                    * the mean wind, the wind at full speed from the start */
     } simulation;

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# test_cli_accuracy_newton.sh: simulation.newton_tolerance, the Newton tolerance of both models'
+# implicit step (the integrator tolerance the accuracy study sweeps): its range (exit 2 naming
+# FILE:LINE, the key and the allowed range); the default and the same value written out give the
+# same outputs bit for bit; a looser value does less Newton work in both models (counters of
+# summary.json) and changes the trace, a tighter one more.
+set -u
+: "${GALLOP:?GALLOP must hold the path of the gallop binary}"
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
+bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
+tmp=$(mktemp -d /tmp/gallop_cli_accnewton_XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
+# a taut string swinging in the wind (tests/test_cli_accuracy_front.sh's), 10 s
+cat > "$tmp/s.ini" <<'INI'
+[span]
+length = 100
+horizontal_tension = 20000
+[conductor]
+diameter = 0.03
+mass_per_length = 1.0
+axial_stiffness = 3e7
+bending_stiffness = 1e-3
+torsional_stiffness = 100
+[wind]
+speed = 2
+[effects]
+gravity = off
+torsion = off
+aero_damping = off
+[model]
+elements = 8
+modes_vertical = 1
+modes_horizontal = 2
+modes_torsional = 0
+[simulation]
+duration = 10
+wind_ramp = 0
+rho_inf = 1
+INI
+# ---- the range ----
+for v in 0 1e-15 0.1 -1 abc; do
+  cp "$tmp/s.ini" "$tmp/b.ini"
+  echo "newton_tolerance = $v" >>"$tmp/b.ini"
+  line=$(wc -l <"$tmp/b.ini")
+  "$GALLOP" simulate "$tmp/b.ini" -o "$tmp/bad" >/dev/null 2>"$tmp/err"
+  rc=$?
+  if [ $rc -eq 2 ] && grep -q "$tmp/b.ini:$line: \[simulation\] newton_tolerance" "$tmp/err" &&
+     { [ "$v" = abc ] || grep -q "1e-14 <= newton_tolerance <= 0.01" "$tmp/err"; }; then
+    ok "newton_tolerance = $v: exit 2 naming file, line, key and range"
+  else bad "newton_tolerance = $v: exit $rc: $(cat "$tmp/err")"; fi
+done
+[ -e "$tmp/bad" ] && bad "bad input wrote output" || ok "bad input writes nothing"
+# ---- the default, and the same value written out: the same outputs ----
+counter() { awk -F': ' -v k="\"$2\"" '$1 ~ k { gsub(/[, ]/, "", $2); print $2; exit }' "$1/summary.json"; }
+for model in full reduced; do
+  for t in default 1e-8 1e-3 1e-12; do
+    set=(); [ $t = default ] || set=(--set simulation.newton_tolerance=$t)
+    "$GALLOP" simulate "$tmp/s.ini" --model $model "${set[@]}" -o "$tmp/$model-$t" >/dev/null 2>"$tmp/err" \
+      || bad "$model, tolerance $t: exit $?: $(cat "$tmp/err")"
+  done
+  cmp -s "$tmp/$model-default/trace.csv" "$tmp/$model-1e-8/trace.csv" \
+    && ok "$model: newton_tolerance = 1e-8 (the default) gives the default's trace bit for bit" \
+    || bad "$model: 1e-8 and the default differ"
+  nd=$(counter "$tmp/$model-default" newton_iterations); nl=$(counter "$tmp/$model-1e-3" newton_iterations)
+  nt=$(counter "$tmp/$model-1e-12" newton_iterations)
+  [ -n "$nl" ] && [ -n "$nd" ] && [ "$nl" -lt "$nd" ] && [ "$nt" -ge "$nd" ] \
+    && ok "$model: Newton iterations $nl at 1e-3 < $nd at 1e-8 <= $nt at 1e-12" \
+    || bad "$model: Newton iterations '$nl' at 1e-3, '$nd' at 1e-8, '$nt' at 1e-12"
+  cmp -s "$tmp/$model-default/trace.csv" "$tmp/$model-1e-3/trace.csv" \
+    && bad "$model: 1e-3 gives the default's trace: the key is not read" || ok "$model: 1e-3 changes the trace"
+done
+echo "#summary $pass $fail"
+[ $fail -eq 0 ]
