@@ -10,6 +10,10 @@ set -u
 pass=0; fail=0
 ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
 bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
+# `gallop sweep` starts Open MPI: its own leaks under SAN=1 are suppressed as in test_sweep.sh
+# (tests/lsan-openmpi.supp, with the full unwinding that reaches libmpi's frames)
+export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/lsan-openmpi.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 tmp=$(mktemp -d /tmp/gallop_bundle_cli_XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 

@@ -98,8 +98,10 @@ for p in f["points"]:
 if not f["front"]: fail("empty front")
 PY
 # the integrator tolerance (simulation.newton_tolerance) is a choice of the study, for both models:
-# listed with its error and its Newton work; the loosest does less Newton work than the tightest
-python3 - "$j" <<'PY' && ok "newton_tolerance rows of both models: errors listed, 1e-3 does less Newton work than 1e-10" || bad "newton_tolerance rows: see above"
+# listed with its error and its Newton work; in the full model the loosest does less Newton work than
+# the tightest (not asserted of the reduced model: there the tolerance also moves when its basis grows,
+# and a different basis changes the run's length in iterations more than the tolerance does)
+python3 - "$j" <<'PY' && ok "newton_tolerance rows of both models: errors listed; full model: 1e-3 does less Newton work than 1e-10" || bad "newton_tolerance rows: see above"
 import json, math, sys
 f = json.load(open(sys.argv[1]))["front"]
 def fail(msg): print("    " + msg); sys.exit(1)
@@ -110,7 +112,7 @@ for model in ("full", "reduced"):
     for t, p in pts.items():
         if "failed" in p or p["error"] is None or not math.isfinite(p["error"]): fail("%s tol %g: error %s" % (model, t, p.get("error")))
         if not ("tol=%.3g" % t) in p["label"]: fail("label %s" % p["label"])
-    if not (0 < pts[1e-3]["newton_iterations"] < pts[1e-10]["newton_iterations"]):
+    if model == "full" and not (0 < pts[1e-3]["newton_iterations"] < pts[1e-10]["newton_iterations"]):
         fail("%s: Newton iterations %d at 1e-3, %d at 1e-10" % (model, pts[1e-3]["newton_iterations"], pts[1e-10]["newton_iterations"]))
 PY
 awk -F, 'NR > 1 && $2 == "newton_tolerance" && $18 == 0.001 && $19 > 0' "$c" | grep -q . \

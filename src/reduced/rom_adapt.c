@@ -275,7 +275,6 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
     nw->steps += old->steps, nw->newton_iterations += old->newton_iterations, nw->tangents += old->tangents;
     nw->force_evaluations += old->force_evaluations, nw->halvings += old->halvings;
     nw->build_time_s += old->build_time_s;
-    memcpy(nw->check_amp, old->check_amp, sizeof nw->check_amp); /* the check's running amplitudes */
     gal_rom_free(old);
     *m = nw;
     return GAL_OK;

@@ -3,9 +3,8 @@
  * at the reconstructed state, turned into the displacement that would correct it, du = K0^-1 R,
  * and split into the families of the motion (vertical: in the plane of the span, normal to the
  * conductor at equilibrium; horizontal: out of that plane; axial: along it; torsional: the twist),
- * each in the mass norm |u|^2 = sum m_d u_d^2 and set against the family's own running amplitude
- * (so that the axial forces, large and balanced, do not swamp the transverse ones, nor the
- * translations the twist). */
+ * each in the mass norm |u|^2 = sum m_d u_d^2 and set against the family's own displacement (so
+ * that the axial forces, large and balanced, do not swamp the transverse ones). */
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
 
@@ -18,9 +17,8 @@
 
 enum { TERM_R, TERM_MA, TERM_CV, TERM_G, TERM_F, NTERM };
 
-/* Accumulate sum m y^2 per family of the free-dof displacement y into acc[family], and sum m into
- * mass[family] (may be NULL). */
-static void accumulate(const gal_rom *m, const double *y, const double *mdiag, double *acc, double *mass)
+/* Accumulate sum m y^2 per family of the free-dof displacement y into acc[family]. */
+static void accumulate(const gal_rom *m, const double *y, const double *mdiag, double *acc)
 {
     const gal_rod *rod = m->rod;
     int nn = rod->nn;
@@ -43,33 +41,12 @@ static void accumulate(const gal_rom *m, const double *y, const double *mdiag, d
         acc[GAL_FAMILY_VERTICAL] += yv * yv * w;
         acc[GAL_FAMILY_HORIZONTAL] += yh * yh * w;
         acc[GAL_FAMILY_AXIAL] += ya * ya * w;
-        if (mass) mass[GAL_FAMILY_VERTICAL] += w;
     }
     if (rod->p.torsion)
         for (int j = 0; j < rod->p.elements; j++) {
             int d = rod->dof[3 * nn + j];
             if (d >= 0) acc[GAL_FAMILY_TORSIONAL] += y[d] * y[d] * mdiag[d];
-            if (d >= 0 && mass) mass[GAL_FAMILY_TORSIONAL] += mdiag[d];
         }
-}
-
-#define TWIST_FLOOR_RAD 0.0174533 /* 1 deg: below it the twist is not measured on its own scale
-                                    * (15 deg, the issue's 3 deg p-p at 0.1, grew the basis late on
-                                    * iced_gallop at 40 elements, twist 94% off: BENCHMARKS.md) */
-#define HORIZONTAL_FLOOR 0.4        /* of the vertical amplitude: 5% of it is 2% of the vertical */
-#define AXIAL_FLOOR 0.02            /* of the vertical amplitude */
-
-/* The running amplitudes m->check_amp updated with the displacement's mass norms^2 d2 (mass:
- * the families' masses), and the scales each family's correction is relative to. */
-static void scales(gal_rom *m, const double *d2, const double *mass, double *scale)
-{
-    double *A = m->check_amp;
-    for (int f = 0; f < GAL_FAMILY_COUNT; f++) A[f] = fmax(A[f], sqrt(d2[f]));
-    scale[GAL_FAMILY_VERTICAL] = A[GAL_FAMILY_VERTICAL];
-    scale[GAL_FAMILY_HORIZONTAL] = fmax(A[GAL_FAMILY_HORIZONTAL], HORIZONTAL_FLOOR * A[GAL_FAMILY_VERTICAL]);
-    scale[GAL_FAMILY_AXIAL] = fmax(A[GAL_FAMILY_AXIAL], AXIAL_FLOOR * A[GAL_FAMILY_VERTICAL]);
-    /* a uniform TWIST_FLOOR twist's mass norm over sqrt 2 (a sine's) */
-    scale[GAL_FAMILY_TORSIONAL] = fmax(A[GAL_FAMILY_TORSIONAL], TWIST_FLOOR_RAD * sqrt(0.5 * mass[GAL_FAMILY_TORSIONAL]));
 }
 
 int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
@@ -101,13 +78,14 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     if ((st = gal_chol_solve(m->chol0, y[TERM_R], y[TERM_R]))) goto done;
     if (du) memcpy(du, y[TERM_R], (size_t)n * sizeof(double));
     memcpy(y[TERM_MA], u, (size_t)n * sizeof(double));
-    double acc[3][GAL_FAMILY_COUNT] = {{0}};
-    accumulate(m, y[TERM_R], rod->mdiag, acc[0], NULL);
-    accumulate(m, y[TERM_MA], rod->mdiag, acc[1], acc[2]);
-    scales(m, acc[1], acc[2], chk->scale);
+    double acc[2][GAL_FAMILY_COUNT] = {{0}}, total = 0;
+    accumulate(m, y[TERM_R], rod->mdiag, acc[0]);
+    accumulate(m, y[TERM_MA], rod->mdiag, acc[1]);
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) total += acc[1][f];
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) {
-        chk->err[f] = sqrt(acc[0][f]), chk->disp[f] = sqrt(acc[1][f]);
-        chk->rel[f] = chk->scale[f] > 0 ? chk->err[f] / chk->scale[f] : 0;
+        double scale = fmax(sqrt(acc[1][f]), 0.02 * sqrt(total));
+        chk->err[f] = sqrt(acc[0][f]), chk->disp[f] = sqrt(acc[1][f]), chk->scale[f] = scale;
+        chk->rel[f] = scale > 0 ? sqrt(acc[0][f]) / scale : 0;
         chk->max = fmax(chk->max, chk->rel[f]);
     }
 done:

@@ -76,17 +76,14 @@ typedef struct gal_rom_opts {
 
 /* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'
  * residual R at a reconstructed state turned into the displacement that would correct it,
- * du = K0^-1 R, measured in the mass norm (|u|^2 = sum m_d u_d^2) and set against the family's own
- * amplitude, the largest mass norm of its displacement from the equilibrium over the checks so far
- * (gal_rom.check_amp): a relative amplitude error of each family on its own scale, so that neither
- * the axial forces nor the translations swamp the twist. Floors where a family barely moves: the
- * horizontal at 0.4 of the vertical amplitude (5% of it = 2% of the vertical), the axial at 0.02 of
- * the vertical, the twist at 1 deg all along the span. Calibrated on tests/rom (BENCHMARKS.md). */
+ * du = K0^-1 R, measured in the mass norm (|u|^2 = sum m_d u_d^2, the same unit for twist and
+ * translation) and set against the family's own displacement from the equilibrium (at least 2% of
+ * the whole motion's): a relative amplitude error. */
 typedef struct gal_rom_check {
     double rel[GAL_FAMILY_COUNT];
     double max;             /* the largest of rel */
-    double err[GAL_FAMILY_COUNT];  /* the mass norms of du per family */
-    double disp[GAL_FAMILY_COUNT]; /* ... and of the displacement from the equilibrium */
+    double err[GAL_FAMILY_COUNT];   /* the mass norms of du per family */
+    double disp[GAL_FAMILY_COUNT];  /* ... and of the displacement from the equilibrium */
     double scale[GAL_FAMILY_COUNT]; /* ... and the scale rel is relative to */
 } gal_rom_check;
 
@@ -128,8 +125,6 @@ typedef struct gal_rom {
     struct gal_rom_qm *qm;  /* o.manifold: the quadratic term (r = nmodes, V = Phi), else NULL */
     double next_hyper_check; /* s */
     double hJ;              /* s: the time step of the factorized iteration matrix J (0: none) */
-    double check_amp[GAL_FAMILY_COUNT];    /* the self-check's running amplitudes per family (gal_rom_check; carried
-                             * over when the basis grows) */
     double *fr;             /* r: scratch */
 } gal_rom;
 
