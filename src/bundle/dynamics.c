@@ -258,24 +258,14 @@ static int try_step(gal_bundle_dyn *d, double h)
                      d->o.max_newton, t1, d->steps + 1);
 }
 
+static int try_step_cb(void *ctx, double hh)
+{
+    return try_step(ctx, hh);
+}
+
 int gal_bundle_dyn_step(gal_bundle_dyn *d)
 {
-    double h = d->o.h, done = 0;
-    int halvings = 0;
-    while (done < d->o.h * (1 - 1e-12)) {
-        double hh = fmin(h, d->o.h - done);
-        int st = try_step(d, hh);
-        if (st == GAL_OK) {
-            done += hh;
-            continue;
-        }
-        if (st == GAL_ENOMEM) return st;
-        d->rejected_steps++;
-        if (++halvings > d->o.max_halvings)
-            return gal_error(GAL_EFAIL, "bundle dynamics: step failed at t = %.6g s after %d halvings of the time "
-                             "step (h = %.3g s): %s", d->t, d->o.max_halvings, hh, gal_error_message());
-        h = 0.5 * hh;
-    }
-    d->steps++;
-    return GAL_OK;
+    int st = gal_dyn_subdivide(try_step_cb, d, d->o.h, d->o.max_halvings, &d->rejected_steps, &d->t, "bundle dynamics");
+    if (st == GAL_OK) d->steps++;
+    return st;
 }

@@ -293,24 +293,36 @@ static int try_step(gal_dyn *d, double h)
                      d->o.max_newton, t1, d->steps + 1);
 }
 
+static int try_step_cb(void *ctx, double hh)
+{
+    return try_step(ctx, hh);
+}
+
 int gal_dyn_step(gal_dyn *d)
 {
-    double h = d->o.h, done = 0;
+    int st = gal_dyn_subdivide(try_step_cb, d, d->o.h, d->o.max_halvings, &d->rejected_steps, &d->t, "dynamics");
+    if (st == GAL_OK) d->steps++;
+    return st;
+}
+
+int gal_dyn_subdivide(int (*try_step)(void *ctx, double hh), void *ctx, double h, int max_halvings,
+                      long *rejected, const double *t, const char *who)
+{
+    double step = h, done = 0;
     int halvings = 0;
-    while (done < d->o.h * (1 - 1e-12)) {
-        double hh = fmin(h, d->o.h - done);
-        int st = try_step(d, hh);
+    while (done < h * (1 - 1e-12)) {
+        double hh = fmin(step, h - done);
+        int st = try_step(ctx, hh);
         if (st == GAL_OK) {
             done += hh;
             continue;
         }
         if (st == GAL_ENOMEM) return st;
-        d->rejected_steps++;
-        if (++halvings > d->o.max_halvings)
-            return gal_error(GAL_EFAIL, "dynamics: step failed at t = %.6g s after %d halvings of the time "
-                             "step (h = %.3g s): %s", d->t, d->o.max_halvings, hh, gal_error_message());
-        h = 0.5 * hh;
+        (*rejected)++;
+        if (++halvings > max_halvings)
+            return gal_error(GAL_EFAIL, "%s: step failed at t = %.6g s after %d halvings of the time step (h = %.3g s): %s",
+                             who, *t, max_halvings, hh, gal_error_message());
+        step = 0.5 * hh;
     }
-    d->steps++;
     return GAL_OK;
 }

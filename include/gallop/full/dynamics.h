@@ -66,6 +66,12 @@ gal_dyn *gal_dyn_free(gal_dyn *d);
 int gal_dyn_step(gal_dyn *d);
 /* Kinetic + elastic + gravity energy, J. */
 double gal_dyn_energy(const gal_dyn *d);
+/* One step of length h covered by attempts try_step(ctx, hh) (each restoring the state on failure),
+ * halving hh after a failure up to max_halvings times; *rejected counts the failed attempts. who
+ * names the integrator in the message, *t is its current time (read at a failure). GAL_ENOMEM at once;
+ * GAL_EFAIL with time, halvings and the last attempt's reason when it cannot. */
+int gal_dyn_subdivide(int (*try_step)(void *ctx, double hh), void *ctx, double h, int max_halvings,
+                      long *rejected, const double *t, const char *who);
 
 #ifdef __cplusplus
 }
