@@ -141,15 +141,8 @@ int gal_rom_qm_build(gal_rom *m)
     for (int j = 0, p = 0; j < nm; j++)
         for (int i = 0; i <= j; i++, p++) qm->pair[i * nm + j] = qm->pair[j * nm + i] = p;
     for (int j = 0; j < nm && !st; j++) {
-        const double *pj = m->V + (size_t)j * n;
-        double mx = 0;
-        for (int d = 0; d < n; d++) mx = fmax(mx, fabs(pj[d]));
-        double e = m->o.fd_step_m / mx;
-        for (int s = 0; s < 2 && !st; s++) {
-            memcpy(qp, m->q_eq, (size_t)nq * sizeof(double));
-            for (int d = 0; d < n; d++) qp[rod->free_q[d]] += (s ? -e : e) * pj[d];
-            st = gal_rod_eval(rod, qp, NULL, NULL, s ? Km : Kp);
-        }
+        double e;
+        st = gal_rom_tangents_along(m, m->V + (size_t)j * n, Kp, Km, qp, &e);
         for (int i = 0; i <= j && !st; i++) {
             double *th = qm->Th + (size_t)qm->pair[i * nm + j] * n;
             gal_csc_symv(Kp, m->V + (size_t)i * n, w);

@@ -66,4 +66,8 @@ int gal_rom_qm_acceleration(gal_rom *m, const double *x, const double *v, const 
 /* x (and xd when v) on the manifold closest in the mass norm to the full state (q, v). */
 int gal_rom_qm_project_state(gal_rom *m, const double *q, const double *v, double *x, double *xd);
 
+/* The tangents at q_eq +- e phi for the modal derivatives' central difference (rom_basis.c);
+ * shared by the basis and the manifold. */
+int gal_rom_tangents_along(const gal_rom *m, const double *phi, gal_csc *Kp, gal_csc *Km, double *qp, double *e);
+
 #endif

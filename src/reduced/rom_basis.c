@@ -74,6 +74,23 @@ static void orth_append(const gal_rod *rod, double *V, double *MV, int *r, doubl
     (*r)++;
 }
 
+/* The tangents Kp, Km at q_eq +- e phi (phi: free-dof sized), e = o.fd_step_m over phi's largest
+ * entry, for the central difference dK/d eta phi_i = (Kp - Km) phi_i / (2 e); qp: nq scratch. */
+int gal_rom_tangents_along(const gal_rom *m, const double *phi, gal_csc *Kp, gal_csc *Km, double *qp, double *e)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, st = GAL_OK;
+    double mx = 0;
+    for (int d = 0; d < n; d++) mx = fmax(mx, fabs(phi[d]));
+    *e = m->o.fd_step_m / mx;
+    for (int s = 0; s < 2 && !st; s++) {
+        memcpy(qp, m->q_eq, (size_t)m->nq * sizeof(double));
+        for (int d = 0; d < n; d++) qp[rod->free_q[d]] += (s ? -*e : *e) * phi[d];
+        st = gal_rod_eval(rod, qp, NULL, NULL, s ? Km : Kp);
+    }
+    return st;
+}
+
 /* The modal derivatives of the nsel modes (columns of V) appended to V. */
 static int derivatives(gal_rom *m, double *MV, int nsel)
 {
@@ -84,15 +101,8 @@ static int derivatives(gal_rom *m, double *MV, int nsel)
     double *w = malloc((size_t)4 * n * sizeof(double)), *qp = malloc((size_t)nq * sizeof(double));
     if (!Kp || !Km || !w || !qp) { st = gal_error(GAL_ENOMEM, "reduced model: out of memory"); goto done; }
     for (int j = 0; j < nsel && !st; j++) {
-        const double *pj = m->V + (size_t)j * n;
-        double mx = 0;
-        for (int d = 0; d < n; d++) mx = fmax(mx, fabs(pj[d]));
-        double e = m->o.fd_step_m / mx;
-        for (int s = 0; s < 2 && !st; s++) {
-            memcpy(qp, m->q_eq, (size_t)nq * sizeof(double));
-            for (int d = 0; d < n; d++) qp[rod->free_q[d]] += (s ? -e : e) * pj[d];
-            st = gal_rod_eval(rod, qp, NULL, NULL, s ? Km : Kp);
-        }
+        double e;
+        st = gal_rom_tangents_along(m, m->V + (size_t)j * n, Kp, Km, qp, &e);
         for (int i = 0; i <= j && !st; i++) {
             const double *pi = m->V + (size_t)i * n;
             gal_csc_symv(Kp, pi, w);
