@@ -15,32 +15,8 @@ ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
 bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
 tmp=$(mktemp -d /tmp/gallop_cli_accfront_XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
-cat > "$tmp/string.ini" <<'INI'
-[span]
-length = 100
-horizontal_tension = 20000
-[conductor]
-diameter = 0.03
-mass_per_length = 1.0
-axial_stiffness = 3e7
-bending_stiffness = 1e-3
-torsional_stiffness = 100
-[wind]
-speed = 2
-[effects]
-gravity = off
-torsion = off
-aero_damping = off
-[model]
-elements = 8
-modes_vertical = 1
-modes_horizontal = 2
-modes_torsional = 0
-[simulation]
-duration = 30
-wind_ramp = 0
-rho_inf = 1
-INI
+here=$(cd "$(dirname "$0")" && pwd)
+cp "$here/cli/taut_string.ini" "$tmp/string.ini"
 E=0.02
 if "$GALLOP" accuracy "$tmp/string.ini" --tolerance $E -o "$tmp/a" >"$tmp/out" 2>"$tmp/err"; then
   ok "accuracy (front) exits 0"

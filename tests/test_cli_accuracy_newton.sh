@@ -11,33 +11,9 @@ ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
 bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
 tmp=$(mktemp -d /tmp/gallop_cli_accnewton_XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
-# a taut string swinging in the wind (tests/test_cli_accuracy_front.sh's), 10 s
-cat > "$tmp/s.ini" <<'INI'
-[span]
-length = 100
-horizontal_tension = 20000
-[conductor]
-diameter = 0.03
-mass_per_length = 1.0
-axial_stiffness = 3e7
-bending_stiffness = 1e-3
-torsional_stiffness = 100
-[wind]
-speed = 2
-[effects]
-gravity = off
-torsion = off
-aero_damping = off
-[model]
-elements = 8
-modes_vertical = 1
-modes_horizontal = 2
-modes_torsional = 0
-[simulation]
-duration = 10
-wind_ramp = 0
-rho_inf = 1
-INI
+here=$(cd "$(dirname "$0")" && pwd)
+# the taut string of tests/cli/taut_string.ini, 10 s
+sed 's/^duration = 30$/duration = 10/' "$here/cli/taut_string.ini" >"$tmp/s.ini"
 # ---- the range ----
 for v in 0 1e-15 0.1 -1 abc; do
   cp "$tmp/s.ini" "$tmp/b.ini"

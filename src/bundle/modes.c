@@ -129,6 +129,7 @@ static int extract(const gal_bundle *b, ws *w, gal_modes *out)
             st = gal_error(GAL_EFAIL, "bundle modes: mode %d has omega^2 = %.3g < 0: the equilibrium has lost "
                            "stability", k + 1, lam);
         gal_mode *md = out->mode + k;
+        md->index = k + 1;
         md->omega = lam > 0 ? sqrt(lam) : 0;
         md->frequency_hz = md->omega / (2 * GAL_PI);
         gal_bundle_classify(b, dst, scratch, md);

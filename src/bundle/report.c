@@ -4,6 +4,7 @@
 #include "gallop/base/core.h"
 #include "gallop/output/json.h"
 #include "gallop/output/outset.h"
+#include "gallop/output/report.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -32,21 +33,6 @@ static int write_equilibrium(gal_outset *o, const gal_bundle *b)
         }
     }
     free(T);
-    return gal_outset_close(o, fp);
-}
-
-static int write_modes_csv(gal_outset *o, const gal_modes *md)
-{
-    FILE *fp = gal_outset_open(o, "modes.csv");
-    if (!fp) return GAL_EIO;
-    fprintf(fp, "index,family,symmetry,frequency_hz,period_s,share_vertical,share_horizontal,"
-                "share_torsional,share_axial,selected,share_subspan\n");
-    for (int k = 0; k < md->n; k++) {
-        const gal_mode *m = md->mode + k;
-        fprintf(fp, "%d,%s,%s,%.9g,%.9g,%.6f,%.6f,%.6f,%.6f,%d,%.6f\n", k + 1, gal_family_names[m->family],
-                gal_symmetry_names[m->symmetry], m->frequency_hz, m->frequency_hz > 0 ? 1 / m->frequency_hz : INFINITY,
-                m->share[0], m->share[1], m->share[2], m->share[3], m->selected, m->share[GAL_FAMILY_SUBSPAN]);
-    }
     return gal_outset_close(o, fp);
 }
 
@@ -151,7 +137,7 @@ int gal_bundle_report(const char *dir, const gal_scene *sc, const gal_bundle *b,
     int st = gal_outset_begin(&o, dir, "modes");
     if (!st) st = gal_outset_scene(o, sc);
     if (!st) st = write_equilibrium(o, b);
-    if (!st) st = write_modes_csv(o, md);
+    if (!st) st = gal_report_modes_csv(o, md, 1);
     if (!st) st = write_shapes(o, b, md);
     if (!st) st = write_summary(o, sc, b, md, want, wall);
     if (!st) st = gal_outset_commit(o);

@@ -43,17 +43,19 @@ static int write_equilibrium(gal_outset *o, const gal_equilibrium *eq)
     return gal_outset_close(o, fp);
 }
 
-static int write_modes_csv(gal_outset *o, const gal_modes *md)
+int gal_report_modes_csv(gal_outset *o, const gal_modes *md, int subspan)
 {
     FILE *fp = gal_outset_open(o, "modes.csv");
     if (!fp) return GAL_EIO;
     fprintf(fp, "index,family,symmetry,frequency_hz,period_s,share_vertical,share_horizontal,"
-                  "share_torsional,share_axial,selected\n");
+                  "share_torsional,share_axial,selected%s\n", subspan ? ",share_subspan" : "");
     for (int k = 0; k < md->n; k++) {
         const gal_mode *m = md->mode + k;
-        fprintf(fp, "%d,%s,%s,%.9g,%.9g,%.6f,%.6f,%.6f,%.6f,%d\n", m->index, gal_family_names[m->family],
+        fprintf(fp, "%d,%s,%s,%.9g,%.9g,%.6f,%.6f,%.6f,%.6f,%d", m->index, gal_family_names[m->family],
                 gal_symmetry_names[m->symmetry], m->frequency_hz, m->frequency_hz > 0 ? 1 / m->frequency_hz : INFINITY,
                 m->share[0], m->share[1], m->share[2], m->share[3], m->selected);
+        if (subspan) fprintf(fp, ",%.6f", m->share[GAL_FAMILY_SUBSPAN]);
+        fputc('\n', fp);
     }
     return gal_outset_close(o, fp);
 }
@@ -196,7 +198,7 @@ int gal_report_modes(const char *dir, const gal_scene *sc, const gal_equilibrium
     int st = gal_outset_begin(&o, dir, "modes");
     if (!st) st = gal_outset_scene(o, sc);
     if (!st) st = write_equilibrium(o, eq);
-    if (!st) st = write_modes_csv(o, md);
+    if (!st) st = gal_report_modes_csv(o, md, 0);
     if (!st) st = write_shapes(o, eq, md);
     if (!st) st = write_summary(o, sc, eq, md, want, wall);
     if (!st) st = gal_outset_commit(o); /* summary.json last: the commit record */

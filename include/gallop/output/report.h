@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "gallop/modes/modes.h"
+#include "gallop/output/outset.h"
 #include "gallop/scene/scene.h"
 #include "gallop/statics/statics.h"
 
@@ -17,6 +18,10 @@ extern "C" {
  * asked per family. */
 int gal_report_modes(const char *dir, const gal_scene *sc, const gal_equilibrium *eq,
                      const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall_time_s);
+
+/* DIR's modes.csv through the output set o: one line per mode (DESIGN.md "modes.csv"); with `subspan`,
+ * the explicit bundle's extra column share_subspan. */
+int gal_report_modes_csv(gal_outset *o, const gal_modes *md, int subspan);
 
 /* The table of `gallop modes` (equilibrium figures, then one line per selected mode). */
 void gal_report_modes_table(FILE *fp, const gal_scene *sc, const gal_equilibrium *eq,
