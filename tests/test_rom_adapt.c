@@ -1,5 +1,6 @@
 /* test_rom_adapt.c: the reduced model's adaptation (rom_adapt.h): a growth keeps the state (the
- * new model starts from the old one's reconstructed rod, unchanged), logs what it added and when,
+ * new model starts from the old one's reconstructed rod, unchanged), logs what it added and when
+ * (a family's first growth the correction alone, the next the mode too), the twist's norm,
  * carries the counters; the stiff new directions start quasi-static (their reduced force balanced);
  * a basis that cannot grow says what reached its bound and leaves the model as it was. */
 #include "check.h"
@@ -51,19 +52,18 @@ static void test_grow(void)
     gal_rom_reconstruct(m, q, NULL);
     double t = m->t, sc;
     long steps = m->steps;
-    /* growth without the relaxation: the same rod, a larger basis, the event logged */
+    /* growth without the relaxation: the same rod, a larger basis, the event logged; a family's
+     * first growth is the correction alone, its second adds the mode */
     a.relax = 0;
     CHECK(gal_rom_adapt_grow(&a, &m, &chk, du) == GAL_OK, "%s", gal_error_message());
     gal_rom_reconstruct(m, q1, NULL);
     double e = maxdiff(q1, q, nq, &sc);
     CHECK(e <= 1e-10 * sc, "the state moved by %g of %g at the growth", e, sc);
-    CHECK(m->r > r0 && m->t == t && m->steps == steps, "basis %d -> %d, t %g, steps %ld", r0, m->r, m->t, m->steps);
+    CHECK(m->r == r0 + 1 && m->t == t && m->steps == steps, "basis %d -> %d, t %g, steps %ld", r0, m->r, m->t, m->steps);
     CHECK(a.nevents == 1 && a.ev[0].basis_before == r0 && a.ev[0].basis_after == m->r && a.ev[0].t_s == t &&
-              a.ev[0].corrections == 1 && a.ev[0].mode_added >= 0,
+              a.ev[0].corrections == 1 && a.ev[0].mode_added == -1,
           "event: %d, %d -> %d at %g s, mode %d", a.nevents, a.ev[0].basis_before, a.ev[0].basis_after, a.ev[0].t_s,
           a.ev[0].mode_added);
-    CHECK(a.md->mode[a.ev[0].mode_added].family == (a.ev[0].family == GAL_FAMILY_AXIAL ? GAL_FAMILY_VERTICAL : a.ev[0].family),
-          "the mode added is of the family of the largest residual");
     /* with the relaxation: the new stiff direction's reduced force balanced, the old coordinates'
      * projection of the rod kept to the relaxation's size */
     CHECK(gal_rom_residual_dir(m, &chk, du) == GAL_OK, "%s", gal_error_message());
@@ -75,11 +75,32 @@ static void test_grow(void)
     for (int k = 0; k < m->r; k++) amax = fmax(amax, fabs(m->a[k]));
     an = fabs(m->a[m->r - 1]);
     CHECK(an <= 1e-6 * amax, "the relaxed direction's acceleration %g of %g", an, amax);
+    int r05 = m->r;
+    CHECK(gal_rom_advance(m, 0.6) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_rom_residual_dir(m, &chk, du) == GAL_OK, "%s", gal_error_message());
+    chk.rel[a.ev[0].family] = chk.max = 1; /* the same family fails again */
+    a.policy = GAL_ROM_ADD_CORRECTION | GAL_ROM_ADD_MODE, a.relax = 0;
+    CHECK(gal_rom_adapt_grow(&a, &m, &chk, du) == GAL_OK, "%s", gal_error_message());
+    CHECK(a.nevents == 3 && a.ev[2].mode_added >= 0 && a.ev[2].corrections == 1 && m->r > r05 + 1,
+          "second growth: mode %d, basis %d -> %d", a.ev[2].mode_added, r05, m->r);
+    CHECK(a.md->mode[a.ev[2].mode_added].family == (a.ev[2].family == GAL_FAMILY_AXIAL ? GAL_FAMILY_VERTICAL : a.ev[2].family),
+          "the mode added is of the family of the largest residual");
     /* nothing to add: the model unchanged, the bound named */
     gal_rom *before = m;
     a.policy = 0;
     CHECK(gal_rom_adapt_grow(&a, &m, &chk, du) == GAL_ROM_ELIMIT, "cannot grow");
-    CHECK(m == before && a.nevents == 2, "unchanged");
+    CHECK(m == before && a.nevents == 3, "unchanged");
+    /* the norm: the twist against 1.5 times its running amplitude (at least a 1-deg half-sine) */
+    gal_rom_check c2;
+    double amp = a.amp[GAL_FAMILY_TORSIONAL];
+    CHECK(gal_rom_adapt_residual(&a, m, &c2, du) == GAL_OK, "%s", gal_error_message());
+    double expect = c2.err[GAL_FAMILY_TORSIONAL] / (GAL_ROM_TWIST_WEIGHT * fmax(fmax(amp, c2.disp[GAL_FAMILY_TORSIONAL]),
+                                                                              a.twist_floor));
+    CHECK_REL(c2.rel[GAL_FAMILY_TORSIONAL], expect, 1e-12);
+    CHECK(a.twist_floor > 0 && a.amp[GAL_FAMILY_TORSIONAL] >= amp, "floor %g, amplitude %g", a.twist_floor, amp);
+    double mx = 0;
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) mx = fmax(mx, c2.rel[f]);
+    CHECK(c2.max == mx, "max %g of %g", c2.max, mx);
     CHECK(strstr(gal_error_message(), "basis grew to") != NULL, "%s", gal_error_message());
     free(q);
     free(du);

@@ -26,10 +26,10 @@ static int is_short(const char *path)
 
 /* The issue's figures on one span; the full model's window must be a steady one (it settled in
  * the first three quarters of the run). */
-static void one_span(const char *path)
+static void one_span(const char *path, const char **ov, int nov, int growths_min)
 {
     gal_scene sc;
-    if (gal_scene_load(&sc, path, NULL, 0, "data/conductors.csv")) {
+    if (gal_scene_load(&sc, path, ov, nov, "data/conductors.csv")) {
         CHECK(0, "%s: %s", path, gal_error_message());
         return;
     }
@@ -65,6 +65,7 @@ static void one_span(const char *path)
         CHECK_REL(mr.tension_max_steady, mf.tension_max_steady, 5e-2);
         CHECK(info.valid && info.residual_max <= sc.model.residual_tolerance, "%s: residual %g, valid %d", path,
               info.residual_max, info.valid);
+        CHECK(info.nevents >= growths_min, "%s: %d growths, at least %d", path, info.nevents, growths_min);
     }
     if (!sf) gal_sim_result_clear(&rf);
     if (!sr) gal_sim_result_clear(&rr);
@@ -80,17 +81,29 @@ static void test_short_spans(void)
     glob_t g = {0};
     int n = 0;
     if (nargs)
-        for (int k = 0; k < nargs; k++) one_span(args[k]), n++;
+        for (int k = 0; k < nargs; k++) one_span(args[k], NULL, 0, 0), n++;
     else if (glob("tests/rom/*.ini", 0, NULL, &g) == 0)
         for (size_t k = 0; k < g.gl_pathc; k++)
-            if (is_short(g.gl_pathv[k])) one_span(g.gl_pathv[k]), n++;
+            if (is_short(g.gl_pathv[k])) one_span(g.gl_pathv[k], NULL, 0, 0), n++;
     globfree(&g);
     CHECK(n >= (nargs ? 1 : 2), "%d short spans in tests/rom/", n);
+}
+
+/* The known miss of the check before the twist had its own norm (BENCHMARKS.md): the shipped
+ * scene at 40 elements with one torsional mode, whose twist is a 5:1 resonance with the galloping
+ * (26.8 deg against 19.1, 40% off, at residual 0.084 under 0.1, valid). Now caught, grown, in
+ * agreement. */
+static void test_known_miss(void)
+{
+    if (nargs) return;
+    const char *ov[] = {"model.elements=40", "model.modes_torsional=1", "simulation.duration=600"};
+    one_span("data/scenes/iced_gallop.ini", ov, 3, 1);
 }
 
 int main(int argc, char **argv)
 {
     nargs = argc - 1, args = argv + 1;
     RUN(test_short_spans);
+    RUN(test_known_miss);
     return CHECK_SUMMARY();
 }

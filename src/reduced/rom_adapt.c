@@ -34,8 +34,28 @@ int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const 
     if (n0) memcpy(a->extra, a->o.extra, (size_t)rod->ndof * n0 * sizeof(double));
     a->nextra = n0;
     a->o.extra = NULL, a->o.nextra = 0;
+    double mt = 0; /* the twist's mass along the span */
+    if (rod->p.torsion)
+        for (int j = 0; j < rod->p.elements; j++) {
+            int d = rod->dof[3 * rod->nn + j];
+            if (d >= 0) mt += rod->mdiag[d];
+        }
+    a->twist_floor = (3.14159265358979323846 / 180) * sqrt(0.5 * mt);
     *m = build(a);
     return *m ? GAL_OK : GAL_EFAIL;
+}
+
+int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, double *du)
+{
+    int st = gal_rom_residual_dir(m, chk, du);
+    if (st) return st;
+    int t = GAL_FAMILY_TORSIONAL;
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) a->amp[f] = fmax(a->amp[f], chk->disp[f]);
+    chk->scale[t] = GAL_ROM_TWIST_WEIGHT * fmax(a->amp[t], a->twist_floor);
+    chk->rel[t] = chk->scale[t] > 0 ? chk->err[t] / chk->scale[t] : 0;
+    chk->max = 0;
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) chk->max = fmax(chk->max, chk->rel[f]);
+    return GAL_OK;
 }
 
 void gal_rom_adapt_clear(gal_rom_adapt *a)
@@ -238,10 +258,11 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
                   a->nevents, old->r, gal_family_names[f], chk->max);
         return GAL_ROM_ELIMIT;
     }
-    int want_mode = (a->policy & GAL_ROM_ADD_MODE) && a->nsel < GAL_ROM_MODES_MAX;
+    int corr = (a->policy & GAL_ROM_ADD_CORRECTION) && du ? 1 : 0;
+    /* the correction alone first; the mode when a correction has not sufficed */
+    int want_mode = (a->policy & GAL_ROM_ADD_MODE) && a->nsel < GAL_ROM_MODES_MAX && (!corr || a->corrected[f]);
     int mode = want_mode ? next_mode(a, f) : -1;
     if (want_mode && mode < 0 && more_modes(a, (gal_family)f) == GAL_OK) mode = next_mode(a, f);
-    int corr = (a->policy & GAL_ROM_ADD_CORRECTION) && du ? 1 : 0;
     if (mode >= 0 && basis_size(a, a->nsel + 1, a->nextra + corr) > GAL_ROM_BASIS_CAP) mode = -1;
     if (corr && basis_size(a, a->nsel + (mode >= 0), a->nextra + 1) > GAL_ROM_BASIS_CAP) corr = 0;
     if (mode < 0 && !corr) {
@@ -268,6 +289,7 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
         if (corr) a->nextra--;
         return st;
     }
+    if (corr && mode < 0) a->corrected[f]++;
     gal_rom_event *e = &a->ev[a->nevents++];
     e->t_s = old->t, e->residual = chk->max, e->family = (gal_family)f;
     e->basis_before = old->r, e->basis_after = nw->r, e->mode_added = mode, e->corrections = corr;

@@ -31,7 +31,7 @@ static void sample(const gal_rom *m, const gal_sim_result *res, long i)
 static int check(gal_rom_adapt *a, gal_rom **m, double tol, gal_rom_sim_info *info, double *du)
 {
     gal_rom_check chk;
-    int st = gal_rom_residual_dir(*m, &chk, du);
+    int st = gal_rom_adapt_residual(a, *m, &chk, du);
     if (st) return st;
     info->checks++;
     if (tol > 0 && chk.max > tol) {

@@ -88,7 +88,7 @@ static int self_check(rom_state *s)
 {
     gal_rom_check chk;
     char why[256] = "";
-    int st = gal_rom_residual_dir(s->rom, &chk, s->du);
+    int st = gal_rom_adapt_residual(&s->adapt, s->rom, &chk, s->du);
     if (st) return st;
     s->checks++;
     if (chk.max > s->tol && s->valid) {

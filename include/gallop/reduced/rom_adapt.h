@@ -3,7 +3,9 @@
  * direction du = K0^-1 R at the failing state and the next computed mode of the family whose
  * residual is largest (with its modal derivatives); a new gal_rom is allocated on the larger basis
  * (gal_rom_alloc, so that whatever it builds is rebuilt) and started from the old one's
- * reconstructed full state. Each growth is logged (time, basis, family, what was added). */
+ * reconstructed full state. Each growth is logged (time, basis, family, what was added). A family's
+ * first growth adds the correction alone (a growth can move a resonant limit cycle: the smallest
+ * change first); a later one, the correction has not sufficed, adds the mode too. */
 #ifndef GALLOP_ROM_ADAPT_H
 #define GALLOP_ROM_ADAPT_H
 
@@ -45,6 +47,9 @@ typedef struct gal_rom_adapt {
     int nextra;
     int nevents;
     gal_rom_event ev[GAL_ROM_EVENTS_MAX];
+    double amp[GAL_FAMILY_COUNT]; /* the largest mass norm of each family's displacement so far */
+    double twist_floor;     /* the mass norm of a 1-deg twist, half-sine along the span */
+    int corrected[GAL_FAMILY_COUNT]; /* growths of the family by a correction alone so far */
 } gal_rom_adapt;
 
 /* The adaptation's set-up from the model's (the same arguments as gal_rom_alloc, copied; rod,
@@ -52,6 +57,14 @@ typedef struct gal_rom_adapt {
 int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const double *q_eq, const gal_modes *md,
                        const int *sel, int nsel, const gal_rom_opts *o, const gal_force *force);
 void gal_rom_adapt_clear(gal_rom_adapt *a);
+
+/* The self-check of *m (gal_rom_residual_dir) in the adaptation's norm: the translations as
+ * there (each family against its own displacement, at least 2% of the whole motion's); the twist
+ * against GAL_ROM_TWIST_WEIGHT times its running amplitude (the largest over the checks so far,
+ * kept across growths, at least a 1-deg half-sine), so that the twist, whose mass norm is ~1e-3
+ * of the translations', is measured at all. Calibrated on tests/rom (BENCHMARKS.md). */
+#define GAL_ROM_TWIST_WEIGHT 1.5
+int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, double *du);
 
 /* Grow the basis of *m after the check chk (du: its correction direction, ndof) failed at the
  * state of *m: *m is replaced by the model on the larger basis, started at the same time from the
