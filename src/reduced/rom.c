@@ -135,6 +135,7 @@ static int internal(gal_rom *m, const double *x, double *f, double *Kr)
         return st;
     }
     reconstruct(m, x, NULL);
+    m->element_evaluations += gal_rod_element_count(m->rod);
     int st = gal_rod_eval(m->rod, m->q, &m->U1, m->gq, Kr ? m->K : NULL);
     if (st) return st;
     project(m, x, m->gq, f);
@@ -163,6 +164,7 @@ static int external(gal_rom *m, double t, const double *x, const double *xd, dou
     m->force_evaluations++;
     if (m->hyper && m->hyper->loads) return gal_rom_hyper_external(m, t, x, xd, f);
     reconstruct(m, x, xd);
+    m->load_element_evaluations += m->rod->p.elements;
     memset(m->fq, 0, (size_t)m->nq * sizeof(double));
     int st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
     if (st) return st;
@@ -395,7 +397,12 @@ int gal_rom_step(gal_rom *m)
     /* the sample against the exact projected forces every hyper_check_interval */
     if (m->hyper && m->o.hyper_check_interval > 0 && m->t >= m->next_hyper_check - 1e-3 * m->o.h) {
         m->next_hyper_check = m->t + m->o.hyper_check_interval;
-        if ((st = gal_rom_hyper_check(m, NULL))) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
+        long e0 = m->element_evaluations, l0 = m->load_element_evaluations;
+        st = gal_rom_hyper_check(m, NULL); /* the exact forces over the whole rod, and the sample's */
+        m->check_element_evaluations += gal_rod_element_count(m->rod) + (m->hyper->loads ? m->rod->p.elements : 0) +
+                                        m->element_evaluations - e0 + m->load_element_evaluations - l0;
+        m->element_evaluations = e0, m->load_element_evaluations = l0;
+        if (st) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
     }
     return GAL_OK;
 }

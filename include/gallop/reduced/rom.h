@@ -120,6 +120,12 @@ typedef struct gal_rom {
     /* counters */
     long steps, newton_iterations, tangents, force_evaluations;
     long halvings;          /* steps retried as two halves after Newton failed */
+    long element_evaluations;      /* energy elements of the rod evaluated by the steps (from the
+                             * sample; an evaluation of the whole rod counts all of them) */
+    long load_element_evaluations; /* the same for the elements of the aerodynamic loads */
+    long check_element_evaluations; /* elements (energy and loads) evaluated by the sample's
+                             * checks (gal_rom_hyper_check): O(mesh) each, every
+                             * o.hyper_check_interval */
     double build_time_s;
     struct gal_rom_hyper *hyper; /* the sample (ecsw.h), or NULL: every element */
     struct gal_rom_qm *qm;  /* o.manifold: the quadratic term (r = nmodes, V = Phi), else NULL */
