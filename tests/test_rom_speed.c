@@ -82,6 +82,22 @@ static void test_cost_per_step_flat(void)
     CHECK(b.per_evaluation < 0.1 * 2 * 240, "%.1f energy elements per evaluation of 479", b.per_evaluation);
 }
 
+/* The sample's checks (the whole rod and its loads each) come less often on a fine mesh: at 800
+ * elements they cost at most GAL_ROM_CHECK_SHARE / 2 of the steps' evaluations (the other half is
+ * the full residual's), at 60 they come every second. */
+static void test_checks_amortised(void)
+{
+    cost a, b;
+    if (run(60, 4, 1, &a) || run(800, 8, 1, &b)) return;
+    double sa = a.per_step + a.loads_per_step, sb = b.per_step + b.loads_per_step;
+    CHECK(b.check_per_step <= 1.3 * 0.5 * GAL_ROM_CHECK_SHARE * sb, "800 elements: %.1f by the checks, %.1f by the "
+          "steps", b.check_per_step, sb);
+    CHECK(a.check_per_step > 0.5 * (119 + 60) / 100.0, "60 elements: %.2f by the checks per step (one a second: %.2f)",
+          a.check_per_step, (119 + 60) / 100.0);
+    CHECK(b.check_per_step + sb <= 1.5 * (a.check_per_step + sa), "per step, checks included: %.1f at 800, %.1f at 60",
+          b.check_per_step + sb, a.check_per_step + sa);
+}
+
 /* The loads on every element: each evaluation costs the mesh (the counter sees the difference). */
 static void test_counters_unsampled_loads(void)
 {
@@ -93,6 +109,7 @@ static void test_counters_unsampled_loads(void)
 int main(void)
 {
     RUN(test_cost_per_step_flat);
+    RUN(test_checks_amortised);
     RUN(test_counters_unsampled_loads);
     return CHECK_SUMMARY();
 }
