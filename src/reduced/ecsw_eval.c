@@ -150,6 +150,7 @@ int gal_rom_hyper_internal(gal_rom *m, const double *x, double *f, double *Kr)
             if (idx[a] >= 0) gu[idx[a]] += w * g[a];
         if (Kr) tangent_element(r, idx, w, H, Bu, Y);
     }
+    m->element_evaluations += S->n;
     if (Kr) tangent_finish(m, S, Bu, Y, gu, Kr);
     rows_mult("N", r, S->nu, Bu, gu, 1, f); /* f += V_S^T gu */
     m->U1 = U;
@@ -167,6 +168,7 @@ int gal_rom_hyper_external(gal_rom *m, double t, const double *x, const double *
     const double *Bu = reconstruct(m, S, x, xd);
     double *gu = m->hyper->gu;
     memset(gu, 0, (size_t)S->nu * sizeof(double));
+    m->load_element_evaluations += S->n;
     for (int k = 0; k < S->n; k++) {
         double fl[7];
         int st = m->force.element(m->force.ctx, t, m->q, m->vq, S->elem[k], fl);

@@ -135,6 +135,7 @@ static int internal(gal_rom *m, const double *x, double *f, double *Kr)
         return st;
     }
     reconstruct(m, x, NULL);
+    m->element_evaluations += gal_rod_element_count(m->rod);
     int st = gal_rod_eval(m->rod, m->q, &m->U1, m->gq, Kr ? m->K : NULL);
     if (st) return st;
     project(m, x, m->gq, f);
@@ -163,6 +164,7 @@ static int external(gal_rom *m, double t, const double *x, const double *xd, dou
     m->force_evaluations++;
     if (m->hyper && m->hyper->loads) return gal_rom_hyper_external(m, t, x, xd, f);
     reconstruct(m, x, xd);
+    m->load_element_evaluations += m->rod->p.elements;
     memset(m->fq, 0, (size_t)m->nq * sizeof(double));
     int st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
     if (st) return st;
@@ -211,7 +213,7 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r;
     m->t = t;
-    m->hJ = 0, m->next_hyper_check = t + m->o.hyper_check_interval;
+    m->hJ = 0, m->next_hyper_check = t + gal_rom_check_interval(m, m->o.hyper_check_interval);
     /* x = V^T M (q - q_eq), x' = V^T M v (on the manifold: the closest state on it) */
     if (m->qm) {
         int st = gal_rom_qm_project_state(m, q, v, m->x, m->v);
@@ -387,6 +389,17 @@ static int step(gal_rom *m, double h, int depth)
     return GAL_OK;
 }
 
+double gal_rom_check_interval(const gal_rom *m, double base_s)
+{
+    const gal_rom_hyper *h = m->hyper;
+    if (!h || !(base_s > 0)) return base_s;
+    int nel = m->rod->p.elements, loads = m->force.eval != NULL;
+    double sample = h->set[0].n + (loads ? (h->loads ? h->set[1].n : nel) : 0);
+    double check = 2.0 * (gal_rod_element_count(m->rod) + (loads ? nel : 0)); /* the sample's and the residual's */
+    double per_s = 2.0 * sample / m->o.h; /* the steps' element evaluations per simulated second */
+    return fmax(base_s, check / (GAL_ROM_CHECK_SHARE * per_s));
+}
+
 int gal_rom_step(gal_rom *m)
 {
     double t1 = m->t + m->o.h;
@@ -394,8 +407,13 @@ int gal_rom_step(gal_rom *m)
     if (st) return gal_error(st, "at t = %.6g s (after %d step halvings): %s", t1, GAL_ROM_HALVINGS, gal_error_message());
     /* the sample against the exact projected forces every hyper_check_interval */
     if (m->hyper && m->o.hyper_check_interval > 0 && m->t >= m->next_hyper_check - 1e-3 * m->o.h) {
-        m->next_hyper_check = m->t + m->o.hyper_check_interval;
-        if ((st = gal_rom_hyper_check(m, NULL))) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
+        m->next_hyper_check = m->t + gal_rom_check_interval(m, m->o.hyper_check_interval);
+        long e0 = m->element_evaluations, l0 = m->load_element_evaluations;
+        st = gal_rom_hyper_check(m, NULL); /* the exact forces over the whole rod, and the sample's */
+        m->check_element_evaluations += gal_rod_element_count(m->rod) + (m->hyper->loads ? m->rod->p.elements : 0) +
+                                        m->element_evaluations - e0 + m->load_element_evaluations - l0;
+        m->element_evaluations = e0, m->load_element_evaluations = l0;
+        if (st) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
     }
     return GAL_OK;
 }

@@ -297,6 +297,8 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
     nw->steps += old->steps, nw->newton_iterations += old->newton_iterations, nw->tangents += old->tangents;
     nw->force_evaluations += old->force_evaluations, nw->halvings += old->halvings;
     nw->build_time_s += old->build_time_s;
+    nw->element_evaluations += old->element_evaluations, nw->load_element_evaluations += old->load_element_evaluations;
+    nw->check_element_evaluations += old->check_element_evaluations;
     gal_rom_free(old);
     *m = nw;
     return GAL_OK;

@@ -58,7 +58,7 @@ static int run_loop(gal_rom_adapt *a, gal_rom **m, const gal_rom_sim_opts *o, do
         sample(*m, res, i);
         if (o->check_interval > 0 && (*m)->t >= next_check - 1e-9) {
             st = check(a, m, tol, info, du);
-            next_check += o->check_interval;
+            next_check += gal_rom_check_interval(*m, o->check_interval);
         }
     }
     free(du);

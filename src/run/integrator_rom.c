@@ -3,7 +3,8 @@
  * near 0 Hz) and their modal
  * derivatives about the equilibrium, fixed generalized-alpha steps, the probes and the support
  * tensions from the reconstructed rod, and the self-check (gal_rom_residual) every second of
- * simulated time against model.residual_tolerance: past it the basis grows (rom_adapt.h: the
+ * simulated time (less often past ~250 elements: gal_rom_check_interval keeps the checks' cost
+ * within a share of the steps') against model.residual_tolerance: past it the basis grows (rom_adapt.h: the
  * residual's correction direction and the next mode of the family whose residual is largest, the
  * model rebuilt and restarted from the same rod state; logged in summary.json basis_growths);
  * when it cannot grow any more the run stops (model.on_invalid = stop) or goes on marked invalid
@@ -17,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define CHECK_INTERVAL 1.0 /* s of simulated time between self-checks */
+#define CHECK_INTERVAL 1.0 /* s of simulated time between self-checks (at least; gal_rom_check_interval) */
 
 static const char *const family_keys[GAL_FAMILY_COUNT] = {"modes_vertical", "modes_horizontal", "modes_torsional",
                                                           "modes_vertical"};
@@ -123,7 +124,8 @@ static int rom_advance(void *state, double t_out, double t_end)
     }
     if (s->rom->t >= s->next_check - 1e-9 || t_out >= t_end) {
         st = self_check(s);
-        while (s->next_check <= s->rom->t + 1e-9) s->next_check += CHECK_INTERVAL;
+        double dt = gal_rom_check_interval(s->rom, CHECK_INTERVAL); /* longer on fine meshes */
+        while (s->next_check <= s->rom->t + 1e-9) s->next_check += dt;
     }
     return st;
 }

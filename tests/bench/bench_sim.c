@@ -3,11 +3,15 @@
  * per simulated second of the integration (gal_sim_run) and of the whole process of one run
  * (statics, modes and the model's own set-up included), medians of 3. CPU time of this process
  * (the machine is shared). Usage: bench_sim [--seconds S] [--reps N] [--set key=value]...
- * (default 300 s, 3 repeats). Prints ROW| lines and BENCH| lines (make bench). */
+ * (default 300 s, 3 repeats). Prints ROW| lines and BENCH| lines (make bench). The BLAS runs on one
+ * thread, as in the command line (src/cli/blas.c): OpenBLAS's idle threads otherwise spin in
+ * sched_yield on the process's CPU time (measured: 12% of the reduced model's). */
 #include "bench_util.h"
 
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
+
+void openblas_set_num_threads(int n) __attribute__((weak));
 
 typedef struct {
     double run, whole;  /* s CPU: the integration, and set-up plus integration */
@@ -73,6 +77,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 32) ov[nov++] = argv[++i];
     }
+    if (openblas_set_num_threads) openblas_set_num_threads(1);
     if (reps < 1) reps = 1;
     if (reps > 16) reps = 16;
     const int ne[3] = {100, 125, 400};

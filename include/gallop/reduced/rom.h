@@ -120,6 +120,12 @@ typedef struct gal_rom {
     /* counters */
     long steps, newton_iterations, tangents, force_evaluations;
     long halvings;          /* steps retried as two halves after Newton failed */
+    long element_evaluations;      /* energy elements of the rod evaluated by the steps (from the
+                             * sample; an evaluation of the whole rod counts all of them) */
+    long load_element_evaluations; /* the same for the elements of the aerodynamic loads */
+    long check_element_evaluations; /* elements (energy and loads) evaluated by the sample's
+                             * checks (gal_rom_hyper_check): O(mesh) each, every
+                             * o.hyper_check_interval */
     double build_time_s;
     struct gal_rom_hyper *hyper; /* the sample (ecsw.h), or NULL: every element */
     struct gal_rom_qm *qm;  /* o.manifold: the quadratic term (r = nmodes, V = Phi), else NULL */
@@ -145,6 +151,15 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v);
 /* One step of o.h (retried in halves, GAL_ROM_HALVINGS deep, when Newton fails or the rod
  * degenerates); GAL_EFAIL with time and reason when even the smallest fails. */
 int gal_rom_step(gal_rom *m);
+/* The checks' share of the element evaluations: a check (the sample's, gal_rom_hyper_check, or the
+ * full residual, gal_rom_residual) evaluates the whole rod and its loads, a step only the samples
+ * (twice, Newton's usual passes): on a fine mesh the checks come less often, so that they cost at
+ * most this share of the steps and the cost per simulated second does not grow with the mesh. */
+#define GAL_ROM_CHECK_SHARE 0.2
+/* s: the interval between checks, at least base_s (the caller's) and long enough for
+ * GAL_ROM_CHECK_SHARE (base_s on a model that is not hyper-reduced). On the shipped scenes (at
+ * most ~250 elements) it is base_s. */
+double gal_rom_check_interval(const gal_rom *m, double base_s);
 /* Steps until t >= t_target - h/1000. */
 int gal_rom_advance(gal_rom *m, double t_target);
 

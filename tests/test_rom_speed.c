@@ -1,0 +1,115 @@
+/* test_rom_speed.c: the reduced model's cost per step counted, not timed (issue 13: "the cost per
+ * step does not grow with the mesh"): the element evaluations of its steps (gal_rom's
+ * element_evaluations and load_element_evaluations) on data/scenes/iced_gallop.ini at 60 and 240
+ * elements, and the counters' own exactness (each evaluation of the loads counts its sample, or
+ * the whole mesh when the loads are not sampled). */
+#include "check.h"
+#include "gallop.h"
+#include "gallop/reduced/ecsw.h"
+#include "gallop/reduced/rom_adapt.h"
+#include "gallop/run/forward.h"
+#include "gallop/run/sim.h"
+#include "gallop/scene/scene.h"
+
+typedef struct {
+    int elements;             /* the mesh */
+    double per_step;          /* energy elements evaluated per step */
+    double loads_per_step;    /* load elements evaluated per step */
+    double per_evaluation;    /* energy elements per evaluation of the loads (one per Newton pass) */
+    double check_per_step;    /* the sample checks' element evaluations per step */
+} cost;
+
+/* The reduced model of iced_gallop at `elements` over `seconds` of simulated time (hyper_loads: the
+ * loads sampled or not); its counters into *c. */
+static int run(int elements, double seconds, int hyper_loads, cost *c)
+{
+    char e[64];
+    snprintf(e, sizeof e, "model.elements=%d", elements);
+    const char *ov[] = {e};
+    gal_scene sc;
+    gal_sim_setup s;
+    if (gal_scene_load(&sc, "data/scenes/iced_gallop.ini", ov, 1, "data/conductors.csv") ||
+        gal_sim_setup_init(&s, &sc, 1)) {
+        CHECK(0, "%s", gal_error_message());
+        return 1;
+    }
+    gal_data *d = s.data;
+    int st = gal_forward(s.model, d, GAL_STAGE_REDUCED);
+    CHECK(st == GAL_OK, "%s", gal_error_message());
+    gal_rom_opts ro;
+    gal_rom_default_opts(&ro);
+    ro.h = 0.01, ro.rho_inf = 0.9, ro.damping = d->damping, ro.hyper_loads = hyper_loads;
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_rom *m = st ? NULL : gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
+    CHECK(st || m != NULL, "%s", gal_error_message());
+    if (m) {
+        st = gal_rom_start(m, 0, d->q_start, d->v_start);
+        if (!st) st = gal_rom_advance(m, seconds);
+        CHECK(st == GAL_OK, "%s", gal_error_message());
+        gal_rom_hyper_info hi;
+        gal_rom_hyper_get_info(m, &hi);
+        /* exactness: every evaluation of the loads is counted with its own element count */
+        long per_load = hyper_loads ? hi.load_elements : elements;
+        CHECK(m->load_element_evaluations == m->force_evaluations * per_load,
+              "%d elements: %ld load element evaluations, %ld evaluations of %ld elements", elements,
+              m->load_element_evaluations, m->force_evaluations, per_load);
+        CHECK(m->steps > 0 && m->check_element_evaluations > 0, "%ld steps, %ld by the checks", m->steps,
+              m->check_element_evaluations);
+        c->elements = elements;
+        c->per_step = (double)m->element_evaluations / (double)m->steps;
+        c->loads_per_step = (double)m->load_element_evaluations / (double)m->steps;
+        c->per_evaluation = (double)m->element_evaluations / (double)m->force_evaluations;
+        c->check_per_step = (double)m->check_element_evaluations / (double)m->steps;
+        printf("    %d elements: %.1f energy and %.1f load element evaluations per step (%.1f per evaluation), "
+               "%.1f by the sample's checks\n", elements, c->per_step, c->loads_per_step, c->per_evaluation,
+               c->check_per_step);
+    }
+    gal_rom_free(m);
+    gal_sim_setup_clear(&s);
+    return st || !m;
+}
+
+/* 4x the mesh: the steps evaluate as many elements (the samples' sizes vary by a few elements), and
+ * far fewer than the mesh has. */
+static void test_cost_per_step_flat(void)
+{
+    cost a, b;
+    if (run(60, 8, 1, &a) || run(240, 8, 1, &b)) return;
+    CHECK(b.per_step <= 1.25 * a.per_step + 8, "energy elements per step: %.1f at 240, %.1f at 60", b.per_step,
+          a.per_step);
+    CHECK(b.loads_per_step <= 1.25 * a.loads_per_step + 8, "load elements per step: %.1f at 240, %.1f at 60",
+          b.loads_per_step, a.loads_per_step);
+    CHECK(b.per_evaluation < 0.1 * 2 * 240, "%.1f energy elements per evaluation of 479", b.per_evaluation);
+}
+
+/* The sample's checks (the whole rod and its loads each) come less often on a fine mesh: at 800
+ * elements they cost at most GAL_ROM_CHECK_SHARE / 2 of the steps' evaluations (the other half is
+ * the full residual's), at 60 they come every second. */
+static void test_checks_amortised(void)
+{
+    cost a, b;
+    if (run(60, 4, 1, &a) || run(800, 8, 1, &b)) return;
+    double sa = a.per_step + a.loads_per_step, sb = b.per_step + b.loads_per_step;
+    CHECK(b.check_per_step <= 1.3 * 0.5 * GAL_ROM_CHECK_SHARE * sb, "800 elements: %.1f by the checks, %.1f by the "
+          "steps", b.check_per_step, sb);
+    CHECK(a.check_per_step > 0.5 * (119 + 60) / 100.0, "60 elements: %.2f by the checks per step (one a second: %.2f)",
+          a.check_per_step, (119 + 60) / 100.0);
+    CHECK(b.check_per_step + sb <= 1.5 * (a.check_per_step + sa), "per step, checks included: %.1f at 800, %.1f at 60",
+          b.check_per_step + sb, a.check_per_step + sa);
+}
+
+/* The loads on every element: each evaluation costs the mesh (the counter sees the difference). */
+static void test_counters_unsampled_loads(void)
+{
+    cost a;
+    if (run(60, 2, 0, &a)) return;
+    CHECK(a.loads_per_step >= 60, "%.1f load elements per step on 60", a.loads_per_step);
+}
+
+int main(void)
+{
+    RUN(test_cost_per_step_flat);
+    RUN(test_checks_amortised);
+    RUN(test_counters_unsampled_loads);
+    return CHECK_SUMMARY();
+}
