@@ -240,6 +240,45 @@ static void test_candidates(void)
     free_span(&s);
 }
 
+/* The training's cost against the mesh (issue 13: the set-up at 1000 elements at most 3x its cost
+ * at 100): above 128 elements the element evaluations of the candidate columns do not grow with
+ * the mesh (128 of each kind of element per training state) and the targets take one evaluation of
+ * the whole rod per training state; up to 128 elements every element is a candidate and there is
+ * no whole-rod evaluation. */
+static long train_counts(int elements, long *full, int *ns)
+{
+    gal_rod_params p = iced;
+    p.elements = elements;
+    span s;
+    int want[GAL_FAMILY_COUNT] = {2, 1, 1, 0};
+    if (make_span(&s, &p, 4.0, want)) return -1;
+    gal_rom_opts o;
+    gal_rom_default_opts(&o);
+    gal_rom *m = gal_rom_alloc(s.eq.rod, s.eq.q, &s.md, s.sel, s.r, &o, NULL);
+    CHECK(m != NULL, "%s", gal_error_message());
+    long ev = -1;
+    if (m) {
+        gal_rom_hyper_info hi;
+        gal_rom_hyper_get_info(m, &hi);
+        ev = hi.train_element_evals, *full = hi.train_full_evals, *ns = hi.snapshots;
+    }
+    gal_rom_free(m);
+    free_span(&s);
+    return ev;
+}
+
+static void test_training_counts(void)
+{
+    long f0, f1, f2;
+    int n0, n1, n2;
+    long e0 = train_counts(60, &f0, &n0), e1 = train_counts(260, &f1, &n1), e2 = train_counts(520, &f2, &n2);
+    printf("    (element evaluations of the training: %ld at 60 elements, %ld at 260, %ld at 520; whole-rod: %ld, %ld, %ld)\n",
+           e0, e1, e2, f0, f1, f2);
+    CHECK(e0 == (long)n0 * (2 * 60 - 1) && f0 == 0, "60 elements: every element a candidate, %ld, %ld", e0, f0);
+    CHECK(e1 > 0 && e2 > 0 && e2 <= e1 + 2L * n2 && e1 <= (long)n1 * (2 * 128 + 4), "candidates: %ld at 260, %ld at 520", e1, e2);
+    CHECK(f1 == n1 && f2 == n2, "one whole-rod evaluation a training state: %ld of %d, %ld of %d", f1, n1, f2, n2);
+}
+
 /* The loads' element shares add up to gal_loads_full. */
 static void test_load_elements(void)
 {
@@ -313,6 +352,7 @@ int main(void)
     RUN(test_element_split);
     RUN(test_hyper_forces);
     RUN(test_candidates);
+    RUN(test_training_counts);
     RUN(test_load_elements);
     RUN(test_mirror_and_resample);
     return CHECK_SUMMARY();

@@ -129,11 +129,13 @@ int gal_damping_project(const gal_damping *c, const double *phi, int nbasis, dou
         double *B = malloc((size_t)c->nb * nbasis * sizeof(double));
         if (!B) return gal_error(GAL_ENOMEM, "damping: out of memory");
         for (int a = 0; a < nbasis; a++)
-            for (int k = 0; k < c->nb; k++) {
-                const double *m = c->mphi + (size_t)k * n, *pa = phi + (size_t)a * n;
-                double s = 0;
-                for (int j = 0; j < n; j++) s += m[j] * pa[j];
+            for (int k = 0; k < c->nb; k++) { /* two dots at a time, each in order */
+                const double *m = c->mphi + (size_t)k * n, *m1 = m + n, *pa = phi + (size_t)a * n;
+                double s = 0, s1 = 0;
+                if (k + 1 < c->nb) for (int j = 0; j < n; j++) s += m[j] * pa[j], s1 += m1[j] * pa[j];
+                else for (int j = 0; j < n; j++) s += m[j] * pa[j];
                 B[(size_t)a * c->nb + k] = s;
+                if (k + 1 < c->nb) B[(size_t)a * c->nb + ++k] = s1;
             }
         for (int a = 0; a < nbasis; a++)
             for (int b = 0; b < nbasis; b++) {

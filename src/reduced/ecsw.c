@@ -132,8 +132,7 @@ static int constants(gal_rom *m)
 /* Both fits, the constants and the sampled entries from the training states held. */
 static int resample(gal_rom *m)
 {
-    int st = gal_rom_hyper_fit(m, 0);
-    if (!st && m->hyper->loads) st = gal_rom_hyper_fit(m, 1);
+    int st = gal_rom_hyper_fit_all(m);
     if (!st) st = constants(m);
     if (!st) st = sample_entries(m);
     return st;
@@ -282,4 +281,6 @@ void gal_rom_hyper_get_info(const gal_rom *m, gal_rom_hyper_info *info)
     info->load_fit_error = h->loads ? h->set[1].fit_error : 0;
     info->mirror = h->mirror;
     info->check_error = h->check_error;
+    info->train_element_evals = h->train_element_evals;
+    info->train_full_evals = h->train_full_evals;
 }

@@ -27,21 +27,6 @@ static double gauss(unsigned long long *s)
     return sqrt(-2 * log(unif(s))) * cos(2 * GAL_PI * unif(s));
 }
 
-int gal_rom_exact_force(gal_rom *m, const double *x, double *f)
-{
-    const gal_rod *rod = m->rod;
-    int n = m->ndof;
-    int st = gal_rod_eval(rod, gal_rom_reconstruct_q(m, x), NULL, m->gq, NULL);
-    if (st) return st;
-    const double *B = gal_rom_basis_at(m, x);
-    for (int k = 0; k < m->r; k++) {
-        double s = 0;
-        for (int d = 0; d < n; d++) s += B[(size_t)k * n + d] * m->gq[rod->free_q[d]];
-        f[k] = s;
-    }
-    return GAL_OK;
-}
-
 /* Training state s: the modes at a random amplitude and direction, each mode's largest
  * translation up to the sag (at least 1% of the span) and its largest twist up to hyper_twist;
  * the modal-derivative coordinates at zero; a velocity of the same scale in the modes. (Until
@@ -167,67 +152,125 @@ int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr)
     return GAL_OK;
 }
 
-/* The fit's target at training state s when not every element is a candidate: the projected
- * force of every element at once (assembled), for the rod's energy less the equilibrium's force
- * and its linear part (Kl: V^T K0 V, and the curvature on the manifold); the state reconstructed. */
-static int target(gal_rom *m, int set, const double *x, double t, const double *Kl, double *b)
+/* The work of one sample's fit (0: the rod's energy, 1: the loads): its candidates, the snapshot
+ * matrix A (ns r x nc) and the target b (ns r); all: every element is a candidate. */
+typedef struct train_set {
+    int set, nc, all;
+    int *cand;
+    double *A, *b;
+} train_set;
+
+/* b0 = B^T (free part of g0) over B's r columns (and b1 of g1 when given), four columns at a time
+ * in one pass over the entries; each sum runs over the entries in order, so the round-off is that
+ * of one column at a time (gal_rom_exact_force's). */
+static void project_free(const gal_rom *m, const double *B, const double *g0, const double *g1, double *b0, double *b1)
 {
-    const gal_rod *rod = m->rod;
-    int n = m->ndof, r = m->r, st;
-    if (set == 0) st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL);
-    else {
-        memset(m->fq, 0, (size_t)m->nq * sizeof(double));
-        st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
-    }
-    if (st) return st;
-    const double *B = gal_rom_basis_at(m, x), *g = set == 0 ? m->gq : m->fq;
-    for (int k = 0; k < r; k++) {
-        const double *bk = B + (size_t)k * n;
-        double sum = 0;
-        for (int d = 0; d < n; d++) sum += bk[d] * g[rod->free_q[d]];
-        if (set == 0) {
-            sum -= m->hyper->F0[k];
-            for (int j = 0; j < r; j++) sum -= Kl[k * r + j] * x[j];
+    const int *fq = m->rod->free_q;
+    int n = m->ndof, r = m->r, k = 0;
+    for (; k + 4 <= r; k += 4) {
+        const double *c0 = B + (size_t)k * n, *c1 = c0 + n, *c2 = c1 + n, *c3 = c2 + n;
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0, t0 = 0, t1 = 0, t2 = 0, t3 = 0;
+        for (int d = 0; d < n; d++) {
+            double a = g0[fq[d]];
+            s0 += c0[d] * a, s1 += c1[d] * a, s2 += c2[d] * a, s3 += c3[d] * a;
+            if (!g1) continue;
+            double e = g1[fq[d]];
+            t0 += c0[d] * e, t1 += c1[d] * e, t2 += c2[d] * e, t3 += c3[d] * e;
         }
-        b[k] = sum;
+        b0[k] = s0, b0[k + 1] = s1, b0[k + 2] = s2, b0[k + 3] = s3;
+        if (g1) b1[k] = t0, b1[k + 1] = t1, b1[k + 2] = t2, b1[k + 3] = t3;
+    }
+    for (; k < r; k++) {
+        const double *c0 = B + (size_t)k * n;
+        double s0 = 0, t0 = 0;
+        for (int d = 0; d < n; d++) {
+            s0 += c0[d] * g0[fq[d]];
+            if (g1) t0 += c0[d] * g1[fq[d]];
+        }
+        b0[k] = s0;
+        if (g1) b1[k] = t0;
+    }
+}
+
+int gal_rom_exact_force(gal_rom *m, const double *x, double *f)
+{
+    int st = gal_rod_eval(m->rod, gal_rom_reconstruct_q(m, x), NULL, m->gq, NULL);
+    if (st) return st;
+    project_free(m, gal_rom_basis_at(m, x), m->gq, NULL, f, NULL);
+    return GAL_OK;
+}
+
+/* The targets at training state s (at time t, reconstructed in m->q, m->vq; B the tangent basis)
+ * of the samples not fitted on every element: the projected force of every element at once
+ * (assembled: one evaluation of the rod, one of the loads, projected in one pass), for the rod's
+ * energy less the equilibrium's force and its linear part (Kl: V^T K0 V, and the curvature on the
+ * manifold). */
+static int targets(gal_rom *m, train_set *T, int nt, int s, const double *x, double t, const double *B, const double *Kl)
+{
+    int r = m->r, st = GAL_OK;
+    double *b[2] = {NULL, NULL};
+    for (int i = 0; i < nt && !st; i++) {
+        if (T[i].all) continue;
+        b[T[i].set] = T[i].b + (size_t)s * r;
+        if (T[i].set == 0) st = gal_rod_eval(m->rod, m->q, NULL, m->gq, NULL);
+        else {
+            memset(m->fq, 0, (size_t)m->nq * sizeof(double));
+            st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
+        }
+        m->hyper->train_full_evals++;
+    }
+    if (st || (!b[0] && !b[1])) return st;
+    if (b[0]) project_free(m, B, m->gq, b[1] ? m->fq : NULL, b[0], b[1]);
+    else project_free(m, B, m->fq, NULL, b[1], NULL);
+    for (int k = 0; k < r && b[0]; k++) {
+        b[0][k] -= m->hyper->F0[k];
+        for (int j = 0; j < r; j++) b[0][k] -= Kl[k * r + j] * x[j];
     }
     return GAL_OK;
 }
 
-/* The raw snapshot columns of the nc candidates (A: ns r x nc) at every training state, and the
- * targets b (ns r) when not all elements are candidates (all: the targets are summed later). */
-static int columns(gal_rom *m, int set, const int *cand, int nc, int all, double *A, double *b)
+/* Kl for the rod's targets: the exact linear part of the whole rod (into Kl, r x r). */
+static int linear_part(gal_rom *m, double *Kl)
+{
+    memcpy(Kl, m->K0r, (size_t)m->r * m->r * sizeof(double));
+    if (!m->qm) return GAL_OK;
+    gal_rom_reconstruct_at(m, NULL, NULL);
+    int st = gal_rod_eval(m->rod, m->q, NULL, m->gq, NULL);
+    if (!st) gal_rom_qm_curvature(m, m->gq, Kl);
+    return st;
+}
+
+/* The raw snapshot columns of every sample's candidates at every training state, and the targets
+ * of those not fitted on every element (all: the targets are summed later), in one pass over the
+ * training states: each state reconstructed once for both samples. */
+static int columns(gal_rom *m, train_set *T, int nt)
 {
     gal_rom_hyper *h = m->hyper;
     const gal_rod *rod = m->rod;
-    int r = m->r, rows = h->ns * r, NQ = GAL_ROD_ELEMENT_NQ, qi[GAL_ROD_ELEMENT_NQ], st;
+    int r = m->r, rows = h->ns * r, NQ = GAL_ROD_ELEMENT_NQ, qi[GAL_ROD_ELEMENT_NQ], st = GAL_OK;
     double g[GAL_ROD_ELEMENT_NQ], U, *Kl = NULL;
-    if (!all && set == 0) { /* the exact linear part of the whole rod */
-        if (!(Kl = malloc((size_t)r * r * sizeof(double)))) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
-        memcpy(Kl, m->K0r, (size_t)r * r * sizeof(double));
-        if (m->qm) {
-            gal_rom_reconstruct_at(m, NULL, NULL);
-            if ((st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL))) { free(Kl); return st; }
-            gal_rom_qm_curvature(m, m->gq, Kl);
+    for (int i = 0; i < nt && !st; i++)
+        if (T[i].set == 0 && !T[i].all) {
+            if (!(Kl = malloc((size_t)r * r * sizeof(double)))) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
+            st = linear_part(m, Kl);
         }
-    }
-    for (int s = 0; s < h->ns; s++) {
+    for (int s = 0; s < h->ns && !st; s++) {
         const double *x = h->snap + (size_t)s * (2 * r + 1), *v = x + r, t = x[2 * r];
         gal_rom_reconstruct_at(m, x, v);
         const double *B = gal_rom_basis_at(m, x);
-        for (int c = 0; c < nc; c++) {
-            int e = cand[c];
-            double *a = A + (size_t)c * rows + (size_t)s * r;
-            gal_rod_element_q(rod, e, qi);
-            if (set == 0) st = gal_rod_element_eval(rod, e, m->q, &U, g, NULL);
-            else st = m->force.element(m->force.ctx, t, m->q, m->vq, e, g);
-            if (st) { free(Kl); return st; }
-            project_local(m, B, qi, g, set == 0 ? NQ : 7, a);
-        }
-        if (!all && (st = target(m, set, x, t, Kl, b + (size_t)s * r))) { free(Kl); return st; }
+        for (int i = 0; i < nt && !st; i++)
+            for (int c = 0; c < T[i].nc && !st; c++) {
+                int e = T[i].cand[c];
+                gal_rod_element_q(rod, e, qi);
+                if (T[i].set == 0) st = gal_rod_element_eval(rod, e, m->q, &U, g, NULL);
+                else st = m->force.element(m->force.ctx, t, m->q, m->vq, e, g);
+                project_local(m, B, qi, g, T[i].set == 0 ? NQ : 7, T[i].A + (size_t)c * rows + (size_t)s * r);
+                h->train_element_evals++;
+            }
+        if (!st) st = targets(m, T, nt, s, x, t, B, Kl);
     }
     free(Kl);
-    return GAL_OK;
+    return st;
 }
 
 /* Less each candidate's force and linear part at the equilibrium (the rod's sample: the fit is of
@@ -296,17 +339,6 @@ static int weigh(gal_rom *m, int set, int nc, double *A, double *b)
     return GAL_OK;
 }
 
-/* The snapshot matrix of sample `set` over its candidates (A: ns r x nc) and the target (b),
- * weighed and normalized. */
-static int snapshots(gal_rom *m, int set, const int *cand, int nc, double *A, double *b)
-{
-    int ne = set == 0 ? gal_rod_element_count(m->rod) : m->rod->p.elements, all = nc == ne;
-    int st = columns(m, set, cand, nc, all, A, b);
-    if (!st) st = nonlinear_part(m, set, cand, nc, all, A, b);
-    if (!st) st = weigh(m, set, nc, A, b);
-    return st;
-}
-
 /* The sample's elements and weights from the NNLS weights w of the ng groups grp (mirror pairs
  * share one weight), and the fit's relative residual. */
 static void keep(gal_rom *m, int set, int rows, int ng, const int *grp, const double *A, const double *b, const double *w)
@@ -331,21 +363,15 @@ static void keep(gal_rom *m, int set, int rows, int ng, const int *grp, const do
     }
 }
 
-int gal_rom_hyper_fit(gal_rom *m, int set)
+/* Fit T's sample by NNLS over its candidates' groups (mirror pairs summed: one weight each) and
+ * keep it; w, grp: scratch of the candidates' count. */
+static int solve(gal_rom *m, train_set *T, double *w, int *grp)
 {
     gal_rom_hyper *h = m->hyper;
     const gal_rod *rod = m->rod;
-    int r = m->r, nel = rod->p.elements, ne = set == 0 ? gal_rod_element_count(rod) : nel, rows = h->ns * r, st, it;
-    int *cand = malloc((size_t)ne * sizeof(int)), *grp = malloc((size_t)ne * sizeof(int)), nc = 0, ng = 0;
-    if (cand) nc = candidates(m, set, cand);
-    double *A = malloc((size_t)rows * (nc > 0 ? nc : 1) * sizeof(double)), *b = malloc((size_t)rows * sizeof(double));
-    double *w = malloc((size_t)ne * sizeof(double));
-    if (!cand || nc < 0 || !A || !b || !w || !grp) {
-        free(cand), free(A), free(b), free(w), free(grp);
-        return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
-    }
-    st = snapshots(m, set, cand, nc, A, b);
-    for (int c = 0; c < nc && !st; c++) { /* the columns of the groups, in place */
+    int set = T->set, nel = rod->p.elements, rows = h->ns * m->r, ng = 0, it, *cand = T->cand;
+    double *A = T->A;
+    for (int c = 0; c < T->nc; c++) { /* the columns of the groups, in place */
         int e = cand[c], me = !h->mirror ? e : set == 0 ? gal_rod_element_mirror(rod, e) : nel - 1 - e;
         if (me < e) continue;
         int cm = c; /* the mirror's column: the candidates are sorted and mirror-closed */
@@ -354,8 +380,48 @@ int gal_rom_hyper_fit(gal_rom *m, int set)
         for (int i = 0; i < rows; i++) g[i] = a[i] + (me != e ? am[i] : 0);
         grp[ng++] = e;
     }
-    if (!st) st = gal_nnls(rows, ng, A, b, m->o.hyper_tol, 0, w, &it);
-    if (!st) keep(m, set, rows, ng, grp, A, b, w);
-    free(cand), free(A), free(b), free(w), free(grp);
+    int st = gal_nnls(rows, ng, A, T->b, m->o.hyper_tol, 0, w, &it);
+    if (!st) keep(m, set, rows, ng, grp, A, T->b, w);
     return st;
+}
+
+/* Fit the nt samples sets[] from one pass over the training states. */
+static int fit(gal_rom *m, int nt, const int *sets)
+{
+    const gal_rod *rod = m->rod;
+    int rows = m->hyper->ns * m->r, ne = gal_rod_element_count(rod), st = GAL_OK; /* the most elements of either kind */
+    train_set T[2];
+    memset(T, 0, sizeof T);
+    int *grp = malloc((size_t)ne * sizeof(int));
+    double *w = malloc((size_t)ne * sizeof(double));
+    for (int i = 0; i < nt && !st; i++) {
+        int nei = sets[i] == 0 ? ne : rod->p.elements;
+        T[i].set = sets[i];
+        if ((T[i].cand = malloc((size_t)nei * sizeof(int)))) T[i].nc = candidates(m, sets[i], T[i].cand);
+        T[i].all = T[i].nc == nei;
+        T[i].A = malloc((size_t)rows * (T[i].nc > 0 ? T[i].nc : 1) * sizeof(double));
+        T[i].b = malloc((size_t)rows * sizeof(double));
+        if (!T[i].cand || T[i].nc < 0 || !T[i].A || !T[i].b) st = GAL_ENOMEM;
+    }
+    if (st || !grp || !w) st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
+    if (!st) st = columns(m, T, nt);
+    for (int i = 0; i < nt && !st; i++) {
+        st = nonlinear_part(m, T[i].set, T[i].cand, T[i].nc, T[i].all, T[i].A, T[i].b);
+        if (!st) st = weigh(m, T[i].set, T[i].nc, T[i].A, T[i].b);
+        if (!st) st = solve(m, T + i, w, grp);
+    }
+    for (int i = 0; i < nt; i++) free(T[i].cand), free(T[i].A), free(T[i].b);
+    free(grp), free(w);
+    return st;
+}
+
+int gal_rom_hyper_fit(gal_rom *m, int set)
+{
+    return fit(m, 1, &set);
+}
+
+int gal_rom_hyper_fit_all(gal_rom *m)
+{
+    static const int both[2] = {0, 1};
+    return fit(m, m->hyper->loads ? 2 : 1, both);
 }

@@ -42,6 +42,8 @@ typedef struct gal_rom_hyper {
     int mirror;                /* mirror pairs share one weight (a symmetric span) */
     int refits;
     double check_error;
+    long train_element_evals;  /* element evaluations of the fits' candidate columns, in all */
+    long train_full_evals;     /* evaluations of the whole rod or loads for the fits' targets */
 } gal_rom_hyper;
 
 /* Training state s (deterministic in s) into x and its velocity into v (r each). */
@@ -51,6 +53,8 @@ int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);
  * On a mirror-symmetric span the columns are mirror pairs (one weight for both): the sampled
  * energy and loads keep the symmetry, and a symmetric motion stays symmetric. */
 int gal_rom_hyper_fit(gal_rom *m, int set);
+/* Both fits (the loads' when sampled) from one pass over the training states. */
+int gal_rom_hyper_fit_all(gal_rom *m);
 /* Element e's gradient at the state in m->q projected on V into col (r), and its Hessian
  * projected, V_e^T H_e V_e (plus the curvature on the manifold), into Kr (r x r). */
 int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr);

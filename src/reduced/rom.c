@@ -29,15 +29,16 @@ static void reconstruct(gal_rom *m, const double *x, const double *xd)
         }
         return;
     }
+    double *s = m->wn, *sv = m->wn2; /* the sums over the columns in order, a column at a time */
+    memset(s, 0, (size_t)n * sizeof(double)), memset(sv, 0, (size_t)n * sizeof(double));
+    for (int k = 0; k < r; k++) {
+        const double *vk = m->V + (size_t)k * n;
+        if (x[k] != 0) for (int d = 0; d < n; d++) s[d] += vk[d] * x[k]; /* a 0 adds +-0 */
+        if (xd && xd[k] != 0) for (int d = 0; d < n; d++) sv[d] += vk[d] * xd[k];
+    }
     for (int d = 0; d < n; d++) {
-        double s = 0, sv = 0;
-        for (int k = 0; k < r; k++) {
-            double vk = m->V[(size_t)k * n + d];
-            s += vk * x[k];
-            if (xd) sv += vk * xd[k];
-        }
-        m->q[rod->free_q[d]] += s;
-        if (xd) m->vq[rod->free_q[d]] = sv;
+        m->q[rod->free_q[d]] += s[d];
+        if (xd) m->vq[rod->free_q[d]] = sv[d];
     }
 }
 

@@ -91,6 +91,21 @@ int gal_rom_tangents_along(const gal_rom *m, const double *phi, gal_csc *Kp, gal
     return st;
 }
 
+/* yp = Kp x and ym = Km x for two symmetric matrices of one pattern (upper triangles) in one pass,
+ * each in gal_csc_symv's order (its round-off). */
+static void symv2(const gal_csc *Kp, const gal_csc *Km, const double *x, double *yp, double *ym)
+{
+    memset(yp, 0, (size_t)Kp->n * sizeof(double));
+    memset(ym, 0, (size_t)Kp->n * sizeof(double));
+    for (int j = 0; j < Kp->n; j++)
+        for (int p = Kp->colptr[j]; p < Kp->colptr[j + 1]; p++) {
+            int i = Kp->rowind[p];
+            double a = Kp->val[p], b = Km->val[p];
+            yp[i] += a * x[j], ym[i] += b * x[j];
+            if (i != j) yp[j] += a * x[i], ym[j] += b * x[i];
+        }
+}
+
 /* The modal derivatives of the nsel modes (columns of V) appended to V. */
 static int derivatives(gal_rom *m, double *MV, int nsel)
 {
@@ -105,8 +120,7 @@ static int derivatives(gal_rom *m, double *MV, int nsel)
         st = gal_rom_tangents_along(m, m->V + (size_t)j * n, Kp, Km, qp, &e);
         for (int i = 0; i <= j && !st; i++) {
             const double *pi = m->V + (size_t)i * n;
-            gal_csc_symv(Kp, pi, w);
-            gal_csc_symv(Km, pi, w + n);
+            symv2(Kp, Km, pi, w, w + n);
             for (int d = 0; d < n; d++) w[d] = -(w[d] - w[n + d]) / (2 * e);
             if ((st = gal_chol_solve(ch, w, w))) break;
             orth_append(rod, m->V, MV, &m->r, w, w + 2 * n, m->o.deflation_tol);
@@ -140,13 +154,22 @@ static int alloc_state(gal_rom *m, int rmax)
     return GAL_OK;
 }
 
-/* Kr = V^T K V (r x r, row-major) for the tangent K. */
+/* Kr = V^T K V (r x r, row-major) for the tangent K; the dots four columns at a time, each summed
+ * in order (the round-off of one at a time). */
 void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, double *work)
 {
     int n = m->ndof, r = m->r;
     for (int j = 0; j < r; j++) {
         gal_csc_symv(K, m->V + (size_t)j * n, work);
-        for (int i = 0; i <= j; i++) Kr[i * r + j] = Kr[j * r + i] = dot(m->V + (size_t)i * n, work, n);
+        int i = 0;
+        for (; i + 4 <= j + 1; i += 4) {
+            const double *a = m->V + (size_t)i * n, *b = a + n, *c = b + n, *e = c + n;
+            double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+            for (int d = 0; d < n; d++) s0 += a[d] * work[d], s1 += b[d] * work[d], s2 += c[d] * work[d], s3 += e[d] * work[d];
+            Kr[i * r + j] = Kr[j * r + i] = s0, Kr[(i + 1) * r + j] = Kr[j * r + i + 1] = s1;
+            Kr[(i + 2) * r + j] = Kr[j * r + i + 2] = s2, Kr[(i + 3) * r + j] = Kr[j * r + i + 3] = s3;
+        }
+        for (; i <= j; i++) Kr[i * r + j] = Kr[j * r + i] = dot(m->V + (size_t)i * n, work, n);
     }
 }
 

@@ -39,6 +39,7 @@ typedef struct {
     int elements, sample, loads, basis;
     double setup_s, step_us, full_step_us, ratio, its, evals;
     long tangents; /* ratio: full over reduced per simulated second */
+    long train_elements, train_full; /* the training's element and whole-rod evaluations */
 } row;
 
 /* One mesh: set-up, then three reduced builds and runs of `seconds`, one full run of as long. */
@@ -95,6 +96,7 @@ static int one(const char *path, const char *const *ov, int nov, int nel, double
         gal_rom_hyper_info hi;
         gal_rom_hyper_get_info(m, &hi);
         out->sample = hi.elements, out->loads = hi.load_elements, out->basis = m->r;
+        out->train_elements = hi.train_element_evals, out->train_full = hi.train_full_evals;
         if (st) printf("%s: reduced: %s\n", path, gal_error_message());
         gal_rom_free(m);
     }
@@ -108,9 +110,11 @@ static int one(const char *path, const char *const *ov, int nov, int nel, double
         out->ratio = out->full_step_us * rf.steps / (out->step_us * seconds / ro.h);
         printf("ROW|%s|n=%d|sample %d energy elements of %d, %d load elements|reduced set-up %.3f s|"
                "reduced %.1f us/step, full %.1f us/step (%ld steps of %.4g s)|x%.1f per simulated second|"
-               "basis %d, %.2f Newton iterations and %.2f load evaluations a step, %ld tangents\n",
+               "basis %d, %.2f Newton iterations and %.2f load evaluations a step, %ld tangents|"
+               "training: %ld element and %ld whole-rod/loads evaluations\n",
                path, nel, out->sample, 2 * nel - 1, out->loads, out->setup_s, out->step_us, out->full_step_us,
-               rf.steps, ro.h, out->ratio, out->basis, out->its, out->evals, out->tangents);
+               rf.steps, ro.h, out->ratio, out->basis, out->its, out->evals, out->tangents,
+               out->train_elements, out->train_full);
         fflush(stdout);
         gal_sim_result_clear(&rf);
     }

@@ -42,6 +42,10 @@ typedef struct gal_rom_hyper_info {
     double load_fit_error; /* and of the loads' */
     int mirror;            /* the samples are mirror pairs */
     double check_error;    /* the last check's relative error (gal_rom_hyper_check) */
+    long train_element_evals; /* element evaluations of the fits' candidate columns so far (set-up
+                           * and re-samplings): at most 128 of each kind per training state */
+    long train_full_evals; /* evaluations of the whole rod or loads for the fits' targets (none
+                           * when every element is a candidate) */
 } gal_rom_hyper_info;
 
 /* Build the sample and weights of m (called by gal_rom_alloc when opts.hyper is on). */
