@@ -2,7 +2,8 @@
  * conserved without damping and wind (rho_inf = 1) for twin and quad bundles started in a torsional
  * and a vertical mode at once; damping takes energy out; free vertical vibration of the bundle at
  * its first vertical mode's frequency, which is a single sub-conductor's at the same tension; the
- * wake factor on the leeward sub-conductors only. */
+ * wake factor on the leeward sub-conductors only; simulation.newton_tolerance read by the run (a
+ * looser one takes fewer Newton iterations, the default's run unchanged bit for bit). */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/model/model.h"
@@ -187,8 +188,50 @@ static void test_wake(void)
     }
 }
 
+/* The galloping quad of data/scenes/quad_bundle_gallop.ini, explicit, 12 s (42 elements asked), at the
+ * Newton tolerance tol (0: the scene's default): its counters and trace. */
+static gal_bundle_sim_result gallop_run(double tol)
+{
+    const char *ov[3] = {"bundle.model=explicit", "model.elements=42", "simulation.duration=12"};
+    gal_scene sc;
+    gal_bundle_sim_result res;
+    memset(&res, 0, sizeof res);
+    int st = gal_scene_load(&sc, "data/scenes/quad_bundle_gallop.ini", ov, 3, NULL);
+    gal_model *m = st ? NULL : gal_model_alloc(&sc, &st);
+    gal_run_opts o;
+    gal_run_opts_from_scene(&sc, &o);
+    if (tol > 0) o.newton_tol = tol;
+    if (!st) st = gal_bundle_simulate(m, &o, &res);
+    CHECK(st == GAL_OK, "%s", gal_error_message());
+    gal_model_free(m);
+    return res;
+}
+
+static void test_newton_tolerance(void)
+{
+    gal_bundle_sim_result r0 = gallop_run(0), r8 = gallop_run(1e-8), r4 = gallop_run(1e-4);
+    long n = r0.c.nsamples * 4 * r0.c.nprobe;
+    CHECK(r8.c.nsamples == r0.c.nsamples && r4.c.nsamples == r0.c.nsamples, "samples");
+    CHECK(r8.c.newton_iterations == r0.c.newton_iterations, "1e-8 is the default: %ld against %ld iterations",
+          r8.c.newton_iterations, r0.c.newton_iterations);
+    int same = r8.c.nsamples == r0.c.nsamples && r0.c.trace && r8.c.trace &&
+               !memcmp(r0.c.trace, r8.c.trace, (size_t)n * sizeof(double));
+    CHECK(same, "1e-8: the default's trace bit for bit");
+    printf("  Newton iterations: tolerance 1e-8 %ld, 1e-4 %ld (%ld steps)\n", r0.c.newton_iterations,
+           r4.c.newton_iterations, r0.c.steps);
+    CHECK(r4.c.newton_iterations < 0.85 * r0.c.newton_iterations, "1e-4: fewer Newton iterations: %ld against %ld",
+          r4.c.newton_iterations, r0.c.newton_iterations);
+    double dmax = 0, zmax = 0;
+    for (long i = 0; r4.c.nsamples == r0.c.nsamples && i < n; i++)
+        dmax = fmax(dmax, fabs(r4.c.trace[i] - r0.c.trace[i])), zmax = fmax(zmax, fabs(r0.c.trace[i]));
+    printf("  1e-4 against 1e-8: largest trace difference %.3g of the largest entry\n", dmax / zmax);
+    CHECK(zmax > 0 && dmax < 1e-2 * zmax, "1e-4: the same motion (%.3g of %.3g)", dmax, zmax);
+    gal_bundle_sim_result_clear(&r0), gal_bundle_sim_result_clear(&r8), gal_bundle_sim_result_clear(&r4);
+}
+
 int main(void)
 {
+    RUN(test_newton_tolerance);
     RUN(test_energy);
     RUN(test_free_vertical);
     RUN(test_wake);

@@ -154,9 +154,9 @@ double gal_bundle_dyn_energy(gal_bundle_dyn *d)
     return T + U;
 }
 
-/* The convergence test's force tolerance (as src/full/dynamics.c: the forces' scale, at least a
- * node's weight, not below the round-off of the elastic and inertia terms). */
-static double force_tolerance(const gal_bundle_dyn *d, double h)
+/* The convergence test's force tolerance at the relative tolerance rel (as src/full/dynamics.c: the
+ * forces' scale, at least a node's weight, not below the round-off of the elastic and inertia terms). */
+static double force_tolerance(const gal_bundle_dyn *d, double h, double rel)
 {
     const gal_bundle *b = d->b;
     const gal_rod *rod = b->rod[0];
@@ -169,7 +169,7 @@ static double force_tolerance(const gal_bundle_dyn *d, double h)
     for (int k = 0; k < 3 * b->nn; k++) qm = fmax(qm, fabs(d->s[k]));
     double elastic = 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0];
     double inertia = 20 * DBL_EPSILON * qm * mmax * (1 - d->am) / (d->beta * h * h);
-    return fmax(d->o.newton_tol * scale, fmax(elastic, inertia));
+    return fmax(rel * scale, fmax(elastic, inertia));
 }
 
 /* The residual at the increment d->dz of a step of size h into d->r; the tangent into b->K, b->M
@@ -226,12 +226,15 @@ static void accept(gal_bundle_dyn *d, double t1)
     d->t = t1;
 }
 
-/* One step of size h (the state unchanged on failure): modified Newton as src/full/dynamics.c. */
+/* One step of size h (the state unchanged on failure): modified Newton as src/full/dynamics.c,
+ * with its test: converged after a correction within GAL_NEWTON_TOL_STRICT (or a tighter
+ * newton_tol), or within a looser newton_tol when that correction reduced the residual. */
 static int try_step(gal_bundle_dyn *d, double h)
 {
     gal_bundle *b = d->b;
     int n = b->ndof, st;
-    double t1 = d->t + h, tol = force_tolerance(d, h), rprev = INFINITY;
+    double t1 = d->t + h, tol = force_tolerance(d, h, d->o.newton_tol), rprev = INFINITY;
+    double strict = force_tolerance(d, h, fmin(d->o.newton_tol, GAL_NEWTON_TOL_STRICT));
     for (int j = 0; j < n; j++) d->dz[j] = h * d->v[j] + 0.5 * h * h * d->a[j]; /* a1 = a0 */
     for (int it = 0; it < d->o.max_newton; it++) {
         double rn;
@@ -241,7 +244,7 @@ static int try_step(gal_bundle_dyn *d, double h)
             return gal_error(GAL_EFAIL, "bundle dynamics: the residual is not finite at t = %.6g s (step %ld, Newton "
                              "iteration %d)", t1, d->steps + 1, it);
         d->newton_iterations++;
-        if (rn <= tol && it > 0) {
+        if (it > 0 && (rn <= strict || (rn <= tol && rn < rprev))) {
             accept(d, t1);
             return GAL_OK;
         }

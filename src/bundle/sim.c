@@ -122,6 +122,7 @@ static int start(run_ws *w, const gal_model *m, const gal_run_opts *o, double h,
     gal_bundle_dyn_opts go;
     gal_bundle_dyn_default_opts(&go);
     go.h = h, go.rho_inf = o->rho_inf;
+    if (o->newton_tol > 0) go.newton_tol = o->newton_tol; /* simulation.newton_tolerance */
     if (m->damping_ratio > 0) gal_damping_rayleigh_fit(m->damping_ratio, wr[0], wr[1], &go.alpha, &go.beta);
     res->alpha = go.alpha, res->beta = go.beta, res->wake_factor = sc->bundle.wake_factor;
     gal_bundle_force F = {NULL, NULL};

@@ -38,7 +38,8 @@ typedef struct gal_bundle_dyn_opts {
     double h;            /* s, time step */
     double rho_inf;      /* [0, 1]; 1: no numerical dissipation */
     double alpha, beta;  /* Rayleigh damping C = alpha M0 + beta K0 (1/s, s); 0, 0: none */
-    double newton_tol;   /* relative residual; default 1e-8 */
+    double newton_tol;   /* relative residual; default 1e-8 (simulation.newton_tolerance; above
+                          * GAL_NEWTON_TOL_STRICT accepted only after a correction that reduced it) */
     int max_newton;      /* per step; default 20 */
     int max_halvings;    /* default 6 */
 } gal_bundle_dyn_opts;
