@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # test_bundle_cli.sh: an explicit bundle ([bundle] model = explicit) through the real binary:
 # `gallop modes` writes the single rod's files with the sub-conductor named (equilibrium.csv and
-# shapes.csv column sub, modes.csv share_subspan); `simulate --model full` and `stability` run it, trace.csv with
-# the centroid's columns and each sub-conductor's (suffix _s<k>); simulate (reduced), compare and sweep
+# shapes.csv column sub, modes.csv share_subspan); `simulate --model full` and `stability` run it (sweep: test_sweep_bundle.sh), trace.csv with
+# the centroid's columns and each sub-conductor's (suffix _s<k>); simulate (reduced) and compare
 # refuse it with exit 2, naming the file, the line and [bundle] model, and saying
 # equivalent is what runs.
 set -u
@@ -29,7 +29,7 @@ subs=$(tail -n +2 "$tmp/modes/equilibrium.csv" 2>/dev/null | cut -d, -f1 | sort 
 [ "$subs" = "1 2 3 4 " ] && ok "equilibrium.csv: 4 sub-conductors" || bad "equilibrium.csv: sub-conductors '$subs'"
 grep -q '"model": "explicit"' "$tmp/modes/summary.json" 2>/dev/null && ok "summary.json bundle" || bad "summary.json bundle"
 
-for cmd in simulate compare sweep; do
+for cmd in simulate compare; do
     "$GALLOP" $cmd "$tmp/quad.ini" -o "$tmp/$cmd" > "$tmp/$cmd.txt" 2>&1
     rc=$?
     if [ $rc -eq 2 ] && grep -q "quad.ini:$line: \[bundle\] model = explicit" "$tmp/$cmd.txt" &&

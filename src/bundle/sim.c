@@ -23,6 +23,25 @@ void gal_bundle_sim_result_clear(gal_bundle_sim_result *res)
     memset(res, 0, sizeof *res);
 }
 
+int gal_bundle_sim_sub(const gal_bundle_sim_result *res, int r, gal_sim_result *out)
+{
+    const gal_sim_result *c = &res->c;
+    size_t np4 = 4 * (size_t)c->nprobe;
+    *out = *c;
+    out->trace = malloc((size_t)c->nsamples * np4 * sizeof(double));
+    out->tension = malloc((size_t)c->nsamples * 2 * sizeof(double));
+    if (!out->trace || !out->tension) {
+        free(out->trace), free(out->tension);
+        out->trace = out->tension = NULL;
+        return gal_error(GAL_ENOMEM, "simulate: out of memory");
+    }
+    for (long i = 0; i < c->nsamples; i++) {
+        memcpy(out->trace + i * np4, res->sub + ((size_t)i * res->n + r) * np4, np4 * sizeof(double));
+        memcpy(out->tension + 2 * i, res->tension + ((size_t)i * res->n + r) * 2, 2 * sizeof(double));
+    }
+    return GAL_OK;
+}
+
 typedef struct {
     gal_bundle *b;
     gal_modes md;

@@ -41,25 +41,6 @@ static void trace_csv(FILE *fp, const gal_bundle_sim_result *res)
     }
 }
 
-/* Sub-conductor r's run as a single rod's result (its probes and tensions), for the measures. */
-static int sub_result(const gal_bundle_sim_result *res, int r, gal_sim_result *out)
-{
-    const gal_sim_result *c = &res->c;
-    size_t np4 = 4 * (size_t)c->nprobe;
-    *out = *c;
-    out->trace = malloc((size_t)c->nsamples * np4 * sizeof(double));
-    out->tension = malloc((size_t)c->nsamples * 2 * sizeof(double));
-    if (!out->trace || !out->tension) {
-        free(out->trace), free(out->tension);
-        return gal_error(GAL_ENOMEM, "simulate: out of memory");
-    }
-    for (long i = 0; i < c->nsamples; i++) {
-        memcpy(out->trace + i * np4, res->sub + ((size_t)i * res->n + r) * np4, np4 * sizeof(double));
-        memcpy(out->tension + 2 * i, res->tension + ((size_t)i * res->n + r) * 2, 2 * sizeof(double));
-    }
-    return GAL_OK;
-}
-
 static void json_measures(gal_json *j, const gal_sim_measures *m)
 {
     gal_json_kv_num(j, "vertical_peak_to_peak_m", m->peak_to_peak[1]);
@@ -78,7 +59,7 @@ static int json_probes(gal_json *j, const gal_bundle_sim_result *res)
     const gal_sim_result *c = &res->c;
     gal_sim_result sr[GAL_BUNDLE_MAX];
     int st = GAL_OK, made = 0;
-    for (; made < res->n && !st; made++) st = sub_result(res, made, &sr[made]);
+    for (; made < res->n && !st; made++) st = gal_bundle_sim_sub(res, made, &sr[made]);
     if (st) made--;
     gal_json_key(j, "probes");
     gal_json_arr_begin(j);

@@ -123,6 +123,7 @@ int gal_cli_scene(const gal_cli_command *c, const gal_cli_args *a, gal_scene *sc
     const char *model = strcmp(c->name, "simulate") ? NULL : gal_cli_value(c, a, "model");
     if (sc->bundle.subconductors > 1 && sc->bundle.explicit_model && strcmp(c->name, "modes") &&
         strcmp(c->name, "check") && strcmp(c->name, "wind") && strcmp(c->name, "stability") &&
+        strcmp(c->name, "sweep") && /* sweep: the explicit full model per case (run/sweep.h) */
         !(model && !strcmp(model, "full"))) {
         int ln = sc->bundle.model_line;
         char at[64] = "--set";

@@ -155,6 +155,15 @@ static int options(sweep *S)
         st = gal_error(GAL_EINPUT, "--model %s; allowed: reduced, full", model);
     S->nuser = gal_cli_values(S->c, &S->a, "set", &S->user);
     S->path = S->a.operand;
+    if (!st && gal_sweep_explicit_bundle(&S->sc)) { /* the explicit bundle: its full model, from rest */
+        if (S->g.continuation)
+            st = gal_error(GAL_EINPUT, "%s: --continuation with [bundle] model = explicit: the explicit bundle's "
+                           "runs start at rest; allowed: no --continuation, or model = equivalent", S->path);
+        else if (S->kind != GAL_MODEL_FULL)
+            fprintf(stderr, "gallop sweep: [bundle] model = explicit: every case runs the explicit bundle's full "
+                    "model (it has no reduced model in a sweep)\n");
+        S->kind = GAL_MODEL_FULL;
+    }
     if (!st) st = gal_sweep_grid_check(&S->g, S->path, S->user, S->nuser);
     return st;
 }

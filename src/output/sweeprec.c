@@ -91,6 +91,9 @@ int gal_sweep_record_write(const char *dir, uint64_t fp, const gal_sweep_result 
     fprintf(o, "has_onset %d\nvalid %d\n", r->has_onset, r->valid);
     put_num(o, "residual_max", r->residual_max);
     put_num(o, "wall_time_s", r->wall_time_s);
+    for (int k = 0; k < r->nsub; k++) /* an explicit bundle's sub-conductors (optional lines) */
+        fprintf(o, "sub%d %.17g %.17g %.17g %.17g\n", k + 1, r->sub_vertical_pp_m[k], r->sub_horizontal_pp_m[k],
+                r->sub_twist_pp_deg[k], r->sub_tension_max_n[k]);
     fprintf(o, "nq %d\n", q ? nq : 0);
     /* the message last: the rest of its line, whatever it holds */
     char msg[sizeof r->message];
@@ -124,6 +127,11 @@ static int parse_record(FILE *fp, uint64_t fp_want, gal_sweep_result *r, int *nq
         if (!strcmp(line, "has_onset")) r->has_onset = atoi(sp), seen |= 1u << 10;
         if (!strcmp(line, "valid")) r->valid = atoi(sp), seen |= 1u << 11;
         if (!strcmp(line, "nq")) *nq = atoi(sp), seen |= 1u << 12;
+        int k = !strncmp(line, "sub", 3) ? atoi(line + 3) : 0;
+        if (k >= 1 && k <= GAL_SWEEP_MAX_SUB && k == r->nsub + 1 &&
+            sscanf(sp, "%lf %lf %lf %lf", &r->sub_vertical_pp_m[k - 1], &r->sub_horizontal_pp_m[k - 1],
+                   &r->sub_twist_pp_deg[k - 1], &r->sub_tension_max_n[k - 1]) == 4)
+            r->nsub = k;
         if (!strcmp(line, "message")) snprintf(r->message, sizeof r->message, "%s", sp), seen |= 1u << 13;
     }
     return seen == (1u << 14) - 1 && got == fp_want && *nq >= 0;

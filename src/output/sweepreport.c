@@ -21,11 +21,30 @@ static void csv_num(FILE *fp, double x)
     else fputc(',', fp);
 }
 
+/* an explicit bundle's sub-conductors: per sub-conductor k, columns suffixed _s<k> after the rest */
+static const char *const sub_cols[4] = {"vertical_pp_m", "horizontal_pp_m", "twist_pp_deg", "tension_max_n"};
+
+static void sub_csv(FILE *fp, const gal_sweep_result *r, int nsub)
+{
+    for (int k = 0; k < nsub; k++) {
+        double x[4] = {NAN, NAN, NAN, NAN};
+        if (k < r->nsub)
+            x[0] = r->sub_vertical_pp_m[k], x[1] = r->sub_horizontal_pp_m[k], x[2] = r->sub_twist_pp_deg[k],
+            x[3] = r->sub_tension_max_n[k];
+        for (int c = 0; c < 4; c++) csv_num(fp, x[c]);
+    }
+}
+
 static void sweep_csv(FILE *fp, const gal_sweep_grid *g, const gal_sweep_result *rows)
 {
+    int nsub = 0;
+    for (long r = 0; r < g->ncases; r++) nsub = rows[r].nsub > nsub ? rows[r].nsub : nsub;
     for (int k = 0; k < g->naxes; k++) fprintf(fp, "%s,", g->axis[k].key);
     fprintf(fp, "branch,vertical_pp_m,horizontal_pp_m,twist_pp_deg,frequency_hz,tension_max_n,onset_speed_m_s,"
-            "valid,wall_time_s\n");
+            "valid,wall_time_s");
+    for (int k = 0; k < nsub; k++)
+        for (int c = 0; c < 4; c++) fprintf(fp, ",%s_s%d", sub_cols[c], k + 1);
+    fputc('\n', fp);
     for (long u = 0; u < g->nunits; u++)
         for (int p = 0; p < g->unit_cases; p++) {
             gal_sweep_case c;
@@ -41,7 +60,9 @@ static void sweep_csv(FILE *fp, const gal_sweep_grid *g, const gal_sweep_result 
             csv_num(fp, r->onset_speed_m_s);
             if (r->valid >= 0) fprintf(fp, ",%d", r->valid);
             else fputc(',', fp);
-            fprintf(fp, ",%.3f\n", r->wall_time_s);
+            fprintf(fp, ",%.3f", r->wall_time_s);
+            sub_csv(fp, r, nsub);
+            fputc('\n', fp);
         }
 }
 

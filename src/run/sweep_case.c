@@ -2,10 +2,12 @@
  * pipeline to the start, gal_run with the full or the scene's reduced integrator), or continued
  * from a given state (gal_data_start_from); the measures at the first probe; the coupled onset
  * about the mean-wind equilibrium as `gallop stability` finds it (analysis/onset.h), once per
- * span and process. */
+ * span and process. An explicit bundle runs its full model and its coupled onset (bundle_dyn.h),
+ * with each sub-conductor's measures. */
 #include "gallop/run/sweep.h"
 #include "gallop/analysis/measure.h"
 #include "gallop/analysis/onset.h"
+#include "gallop/bundle/bundle_dyn.h"
 #include "gallop/run/onset_scene.h"
 #include "gallop/base/core.h"
 #include "gallop/output/record.h"
@@ -63,7 +65,7 @@ static void disk_put(const gal_sweep_onset_cache *cache, uint64_t key, double sp
 static int onset_compute(const gal_scene *sc, double *speed)
 {
     gal_onset O;
-    int st = gal_scene_onset(sc, &O);
+    int st = gal_sweep_explicit_bundle(sc) ? gal_bundle_scene_onset(sc, &O) : gal_scene_onset(sc, &O);
     if (!st) *speed = O.onset_speed, gal_onset_clear(&O);
     return st;
 }
@@ -88,6 +90,45 @@ static int onset_of(const gal_scene *sc, gal_sweep_onset_cache *cache, double *s
     cache->next = (cache->next + 1) % GAL_SWEEP_ONSET_CACHE;
     if (cache->n < GAL_SWEEP_ONSET_CACHE) cache->n++;
     return GAL_OK;
+}
+
+int gal_sweep_explicit_bundle(const gal_scene *sc)
+{
+    return sc->bundle.subconductors > 1 && sc->bundle.explicit_model;
+}
+
+/* An explicit bundle's run (full model, from rest): the centroid's measures at the first probe,
+ * then each sub-conductor's over the centroid's steady window. */
+static int run_bundle(const gal_scene *sc, gal_sweep_result *r)
+{
+    int st;
+    gal_model *m = gal_model_alloc(sc, &st);
+    gal_run_opts o;
+    gal_run_opts_from_scene(sc, &o);
+    gal_bundle_sim_result res;
+    memset(&res, 0, sizeof res);
+    if (!st) st = gal_bundle_simulate(m, &o, &res);
+    gal_sim_measures mc, ms;
+    if (!st) st = gal_sim_measure(&res.c, 0, -1, &mc);
+    if (!st) {
+        r->horizontal_pp_m = mc.peak_to_peak[0], r->vertical_pp_m = mc.peak_to_peak[1];
+        r->twist_pp_deg = mc.peak_to_peak[3], r->frequency_hz = mc.frequency_hz[1];
+        r->tension_max_n = mc.tension_max_steady;
+        r->nsub = res.n < GAL_SWEEP_MAX_SUB ? res.n : GAL_SWEEP_MAX_SUB;
+    }
+    for (int k = 0; !st && k < r->nsub; k++) {
+        gal_sim_result sr;
+        st = gal_bundle_sim_sub(&res, k, &sr);
+        if (!st) st = gal_sim_measure(&sr, 0, mc.steady_from_s, &ms);
+        if (!st) {
+            r->sub_horizontal_pp_m[k] = ms.peak_to_peak[0], r->sub_vertical_pp_m[k] = ms.peak_to_peak[1];
+            r->sub_twist_pp_deg[k] = ms.peak_to_peak[3], r->sub_tension_max_n[k] = ms.tension_max_steady;
+        }
+        free(sr.trace), free(sr.tension);
+    }
+    gal_bundle_sim_result_clear(&res);
+    gal_model_free(m);
+    return st;
 }
 
 /* The run itself, its end state into q_end, v_end when given. */
@@ -142,7 +183,13 @@ int gal_sweep_case_run(const gal_scene *sc, gal_model_kind kind, const double *q
     r->valid = -1;
     if (q_end) *q_end = *v_end = NULL;
     gal_error_clear();
-    int st = run_case(sc, kind, q0, v0, nq0, r, q_end, v_end, nq);
+    int st;
+    if (gal_sweep_explicit_bundle(sc))
+        st = q0 || q_end ? gal_error(GAL_EINPUT, "%s: --continuation with [bundle] model = explicit: the explicit "
+                                     "bundle starts at rest; allowed: model = equivalent", sc->path)
+                         : run_bundle(sc, r);
+    else
+        st = run_case(sc, kind, q0, v0, nq0, r, q_end, v_end, nq);
     r->has_onset = sc->ice.present && sc->ice.aero_table[0];
     if (!st && r->has_onset) st = onset_of(sc, cache, &r->onset_speed_m_s);
     r->status = st;

@@ -113,6 +113,10 @@ struct gal_model;
 struct gal_run_opts;
 int gal_bundle_simulate(const struct gal_model *m, const struct gal_run_opts *o, gal_bundle_sim_result *res);
 void gal_bundle_sim_result_clear(gal_bundle_sim_result *res);
+/* Sub-conductor r's run as a single rod's result (its probes and support tensions; the time and
+ * counters shared with res->c), for analysis/measure.h. Its trace and tension are malloc'ed: free
+ * them (not gal_sim_result_clear, which would free the shared time). */
+int gal_bundle_sim_sub(const gal_bundle_sim_result *res, int r, gal_sim_result *out);
 /* DIR/trace.csv and DIR/summary.json of the run, one output set (README "Bundles"). */
 int gal_bundle_sim_write(const char *dir, const gal_scene *sc, const gal_bundle_sim_result *res);
 

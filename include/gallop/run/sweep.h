@@ -26,6 +26,7 @@ extern "C" {
 #define GAL_SWEEP_MAX_CASES 1000000L   /* cases of a sweep */
 #define GAL_SWEEP_KEY_MAX 96           /* "section.key" */
 #define GAL_SWEEP_VALUE_MAX 64         /* one value's text */
+#define GAL_SWEEP_MAX_SUB 8            /* sub-conductors of an explicit bundle (bundle.h's GAL_BUNDLE_MAX) */
 
 typedef struct gal_sweep_axis {
     char key[GAL_SWEEP_KEY_MAX];       /* section.key as given (the column name) */
@@ -88,6 +89,12 @@ typedef struct gal_sweep_result {
     int valid;                         /* the reduced model's self-check: 1, 0; -1 not checked */
     double residual_max;
     double wall_time_s;                /* the whole case: set-up, run, onset */
+    /* an explicit bundle ([bundle] model = explicit): the figures above are its centroid's (twist:
+     * the bundle's rotation; tension: summed over the sub-conductors), and per sub-conductor k at
+     * the first probe over the centroid's steady window: */
+    int nsub;                          /* sub-conductors (0: a single rod or an equivalent bundle) */
+    double sub_vertical_pp_m[GAL_SWEEP_MAX_SUB], sub_horizontal_pp_m[GAL_SWEEP_MAX_SUB];
+    double sub_twist_pp_deg[GAL_SWEEP_MAX_SUB], sub_tension_max_n[GAL_SWEEP_MAX_SUB];
 } gal_sweep_result;
 
 /* The onsets already computed by this process, keyed by the scene less what the onset ignores
@@ -100,6 +107,11 @@ typedef struct gal_sweep_onset_cache {
     uint64_t key[GAL_SWEEP_ONSET_CACHE];
     double speed[GAL_SWEEP_ONSET_CACHE];
 } gal_sweep_onset_cache;
+
+/* 1 when sc is an explicit bundle ([bundle] model = explicit, more than one sub-conductor): its
+ * cases run the explicit bundle's full model whatever the kind (it has no reduced model in a sweep),
+ * start at rest (no continuation) and take its coupled onset (bundle_dyn.h). */
+int gal_sweep_explicit_bundle(const gal_scene *sc);
 
 /* Run scene sc with the full model (kind GAL_MODEL_FULL) or the scene's reduced model, from the
  * start state (q0, v0) of nq0 entries each when q0 is given (a continuation), else as `gallop
