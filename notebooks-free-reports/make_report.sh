@@ -13,7 +13,8 @@
 #   REPORT_GJ_FACTORS  factors on the scene's torsional stiffness GJ  ("0.5 1 2 4")
 #   REPORT_ACCURACY_DURATION  simulated time (s) of the accuracy study's runs (300)
 #   REPORT_STEPS       steps to run, of: modes stability full reduced compare accuracy torsion
-#                      sweep (all; sweep: sweep_report.sh on iced_gallop, once)
+#                      sweep bundle (all; sweep: sweep_report.sh on iced_gallop, once; bundle:
+#                      bundle_report.sh, the quad bundle beside its single sub-conductor, once)
 #   REPORT_TIMEOUT     seconds allowed to each gallop run              (900)
 #   REPORT_PSD_FMAX, REPORT_TERMINAL: see plot_scene.sh and README.md
 # Exit status: 0 every report written and every run succeeded, 1 a run or a figure failed (the
@@ -51,7 +52,7 @@ done
 outroot=${REPORT_OUT:-out/report}
 duration=${REPORT_DURATION-scene}
 factors=${REPORT_GJ_FACTORS:-0.5 1 2 4}
-steps=" ${REPORT_STEPS:-modes stability full reduced compare accuracy torsion sweep} "
+steps=" ${REPORT_STEPS:-modes stability full reduced compare accuracy torsion sweep bundle} "
 tmo=${REPORT_TIMEOUT:-900}
 sets=()
 for kv in ${REPORT_SET:-}; do sets+=(--set "$kv"); done
@@ -211,5 +212,6 @@ for scene in "${scenes[@]}"; do
     echo "  report: $d/report.md" >&2
     echo "- [$name]($name/report.md)" >> "$index"
 done
+case $steps in *" bundle "*) has stability && has simulate && [ -r "$root/data/scenes/quad_bundle_gallop.ini" ] && { bash "$here/bundle_report.sh" "$bin" "$outroot" && echo "- [quad bundle beside a single conductor](bundle/report.md)" >> "$index" || status=1; } ;; esac
 case $steps in *" sweep "*) has sweep && [ -r "$root/data/scenes/iced_gallop.ini" ] && { bash "$here/sweep_report.sh" "$bin" "$root/data/scenes/iced_gallop.ini" "$outroot" >&2 && echo "- [sweep](sweep/report.md)" >> "$index" || status=1; } ;; esac
 exit $status

@@ -229,8 +229,39 @@ static void test_newton_tolerance(void)
     gal_bundle_sim_result_clear(&r0), gal_bundle_sim_result_clear(&r8), gal_bundle_sim_result_clear(&r4);
 }
 
+/* The explicit onset's convergence in the basis (src/bundle/onset.c): the twin of
+ * quad_bundle_gallop.ini (42 elements asked) at 10, the default GAL_ONSET_BASIS and 60 modes. */
+static void test_onset_basis(void)
+{
+    const char *ov[3] = {"bundle.model=explicit", "bundle.subconductors=2", "model.elements=42"};
+    gal_scene sc;
+    int st = gal_scene_load(&sc, "data/scenes/quad_bundle_gallop.ini", ov, 3, NULL);
+    gal_model *m = st ? NULL : gal_model_alloc(&sc, &st);
+    CHECK(st == GAL_OK, "%s", gal_error_message());
+    if (st) return;
+    int basis[3] = {10, GAL_ONSET_BASIS, 60};
+    double u[3] = {NAN, NAN, NAN};
+    for (int i = 0; i < 3; i++) {
+        gal_onset_opts o;
+        gal_onset_default_opts(&o);
+        o.speed_min = 2.0, o.speed_max = 3.5, o.speed_step = 0.05, o.basis = basis[i];
+        gal_onset O;
+        st = gal_bundle_onset(m, &o, &O);
+        CHECK(st == GAL_OK, "basis %d: %s", basis[i], gal_error_message());
+        if (st) continue;
+        u[i] = O.onset_speed;
+        gal_onset_clear(&O);
+    }
+    printf("  twin onset: %.6f m/s (10 modes), %.6f (%d, the default), %.6f (60)\n", u[0], u[1], GAL_ONSET_BASIS, u[2]);
+    CHECK(u[1] > 2.0 && u[1] < 3.5, "the twin gallops from %.4g m/s", u[1]);
+    CHECK_REL(u[1], u[2], 1e-4);  /* the default converged: 2e-5 at 80 elements, quad and twin (README) */
+    CHECK_REL(u[0], u[2], 1e-3);
+    gal_model_free(m);
+}
+
 int main(void)
 {
+    RUN(test_onset_basis);
     RUN(test_newton_tolerance);
     RUN(test_energy);
     RUN(test_free_vertical);

@@ -71,11 +71,15 @@ static int external(gal_bundle_dyn *d, double t, const double *s, const double *
     return d->force.eval(d->force.ctx, d->b, t, s, v, f);
 }
 
-/* Cv = (alpha M0 + beta K0) v */
+/* Cv = C v: modal, or (alpha M0 + beta K0) v */
 static void damping_force(gal_bundle_dyn *d, const double *v, double *Cv)
 {
     int n = d->b->ndof;
     memset(Cv, 0, (size_t)n * sizeof(double));
+    if (d->o.damping) {
+        gal_damping_apply(d->o.damping, v, Cv);
+        return;
+    }
     if (d->o.alpha == 0 && d->o.beta == 0) return;
     gal_csc_symv(d->M0, v, d->tmp);
     for (int j = 0; j < n; j++) Cv[j] = d->o.alpha * d->tmp[j];
@@ -125,6 +129,11 @@ gal_bundle_dyn *gal_bundle_dyn_alloc(gal_bundle *b, const double *s0, const doub
     else gal_bundle_dyn_default_opts(&d->o);
     if (force) d->force = *force;
     double rho = d->o.rho_inf;
+    if (d->o.damping) d->o.alpha = d->o.beta = 0; /* the modal damping in their place */
+    if (d->o.damping && d->o.damping->ndof != b->ndof) {
+        gal_error(GAL_EINPUT, "bundle dynamics: the damping has %d dofs, the bundle %d", d->o.damping->ndof, b->ndof);
+        return gal_bundle_dyn_free(d);
+    }
     if (!(rho >= 0 && rho <= 1) || !(d->o.h > 0) || !(d->o.alpha >= 0) || !(d->o.beta >= 0)) {
         gal_error(GAL_EINPUT, "bundle dynamics: time step %g s, rho_inf %g, Rayleigh %g, %g; allowed: h > 0, "
                   "0 <= rho_inf <= 1, alpha, beta >= 0", d->o.h, rho, d->o.alpha, d->o.beta);
@@ -199,7 +208,8 @@ static int residual(gal_bundle_dyn *d, double h, double t1, int tangent, double 
     return GAL_OK;
 }
 
-/* S = (1-af) K + cm M + cc C from the tangent in b->K, b->M; factored. */
+/* S = (1-af) K + cm M + cc C from the tangent in b->K, b->M (C: Rayleigh only; the modal damping is
+ * left out, as the single rod's); factored. */
 static int refactor(gal_bundle_dyn *d, double h, double t1)
 {
     const gal_bundle *b = d->b;

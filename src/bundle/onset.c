@@ -20,8 +20,8 @@ typedef struct {
     gal_bundle *b;
     gal_bundle_loads bl;
     gal_chol *chol;
-    gal_csc *K0, *M0;          /* tangent and mass at the no-wind equilibrium (the Rayleigh damping) */
-    double alpha, beta;        /* Rayleigh coefficients, as gal_bundle_simulate fits them */
+    gal_csc *K0, *M0;          /* tangent and mass at the no-wind equilibrium */
+    gal_damping *damping;      /* modal, as gal_bundle_simulate applies it */
     int n, nb;
     double *phi, *omega, *Ka, *Ca, *Cs, *f, *fp, *fm, *z, *v, *st, *mdiag, *scratch, *s0;
 } ows;
@@ -31,6 +31,7 @@ static void ows_clear(ows *w)
     gal_bundle_loads_clear(&w->bl);
     gal_chol_free(w->chol);
     gal_csc_free(w->K0), gal_csc_free(w->M0);
+    gal_damping_free(w->damping);
     double *p[] = {w->phi, w->omega, w->Ka, w->Ca, w->Cs, w->f, w->fp, w->fm, w->z, w->v, w->st, w->mdiag,
                    w->scratch, w->s0};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
@@ -116,24 +117,6 @@ static int aero_column(ows *w, int c, int dv, double *col)
     return GAL_OK;
 }
 
-/* Cs = Phi^T (alpha M0 + beta K0) Phi. */
-static void structural_damping(ows *w)
-{
-    int n = w->n, nb = w->nb;
-    for (int c = 0; c < nb; c++) {
-        const double *pc = w->phi + (size_t)c * n;
-        gal_csc_symv(w->M0, pc, w->fp);
-        gal_csc_symv(w->K0, pc, w->fm);
-        for (int j = 0; j < n; j++) w->fp[j] = w->alpha * w->fp[j] + w->beta * w->fm[j];
-        for (int a = 0; a < nb; a++) {
-            const double *pa = w->phi + (size_t)a * n;
-            double s = 0;
-            for (int j = 0; j < n; j++) s += pa[j] * w->fp[j];
-            w->Cs[a + (size_t)c * nb] = s;
-        }
-    }
-}
-
 /* Kinetic-energy shares (vertical, horizontal, torsional: the bundle's kinematics, bundle.h) of the
  * complex shape ure + i uim over the system's dofs: its two parts' shares weighted by their energy. */
 static void shares(void *ctx, const double *ure, const double *uim, double share[3])
@@ -163,7 +146,7 @@ static int at_speed(ows *w, double mass, gal_onset_speed *sp)
     if (st) return gal_error(st, "bundle onset: modes at %.4g m/s: %s", sp->speed, gal_error_message());
     memcpy(w->phi, md.shape, (size_t)n * nb * sizeof(double));
     for (int k = 0; k < nb; k++) w->omega[k] = md.mode[k].omega;
-    structural_damping(w);
+    if (!st) st = gal_damping_project(w->damping, w->phi, nb, w->Cs); /* Cs = Phi^T C Phi */
     for (int c = 0; c < nb && !st; c++) st = aero_column(w, c, 0, w->Ka + (size_t)c * nb);
     for (int c = 0; c < nb && !st; c++)
         if (w->bl.L[0].aero_damping) st = aero_column(w, c, 1, w->Ca + (size_t)c * nb);
@@ -190,12 +173,9 @@ static int setup(ows *w, const gal_model *m, int basis)
     memset(w, 0, sizeof *w);
     int st = gal_bundle_solve_model(m, &w->b, &md);
     if (st) return st;
-    double flo = INFINITY, fhi = 0;
-    for (int k = 0; k < md.n; k++)
-        if (md.mode[k].selected) fhi = fmax(fhi, md.mode[k].omega), flo = fmin(flo, md.mode[k].omega);
     gal_modes_clear(&md);
-    if (m->damping_ratio > 0) gal_damping_rayleigh_fit(m->damping_ratio, flo, fhi, &w->alpha, &w->beta);
     gal_bundle *b = w->b;
+    if (!(w->damping = gal_bundle_damping_modal(b, m->damping_ratio, 0))) return gal_error_status();
     int n = w->n = b->ndof, nb = w->nb = basis < n - 1 ? basis : n - 1;
     if ((st = gal_bundle_eval(b, NULL, NULL, 1))) return st;
     w->K0 = gal_csc_clone(b->K), w->M0 = gal_csc_clone(b->M), w->chol = gal_chol_alloc(b->K);

@@ -1,5 +1,5 @@
 /* sim.c: a galloping run of the explicit bundle (bundle_dyn.h, gal_bundle_simulate): statics and
- * modes, the output interval and time step as the single rod's full model, Rayleigh damping, the
+ * modes, the output interval and time step as the single rod's full model, modal damping, the
  * loads on every sub-conductor, then the steps to each output time and the probes of every
  * sub-conductor and of the bundle's centroid there. */
 #include "gallop/bundle/bundle_dyn.h"
@@ -47,6 +47,7 @@ typedef struct {
     gal_modes md;
     gal_bundle_loads bl;
     gal_bundle_dyn *dyn;
+    gal_damping *damping;
     double *u, *wind_u;
     gal_probe pa[GAL_BUNDLE_MAX][GAL_MAX_PROBES];
 } run_ws;
@@ -54,6 +55,7 @@ typedef struct {
 static void ws_clear(run_ws *w)
 {
     gal_bundle_dyn_free(w->dyn);
+    gal_damping_free(w->damping);
     gal_bundle_loads_clear(&w->bl);
     gal_modes_clear(&w->md);
     gal_bundle_free(w->b);
@@ -61,12 +63,11 @@ static void ws_clear(run_ws *w)
 }
 
 /* The output interval and the step, as run/sim.c and run/integrator_full.c choose them. */
-static int sampling(const gal_model *m, const gal_modes *md, const gal_run_opts *o, double *dt_out, double *h,
-                    double w[2])
+static int sampling(const gal_model *m, const gal_modes *md, const gal_run_opts *o, double *dt_out, double *h)
 {
-    double fhi = 0, flo = INFINITY;
+    double fhi = 0;
     for (int k = 0; k < md->n; k++)
-        if (md->mode[k].selected) fhi = fmax(fhi, md->mode[k].frequency_hz), flo = fmin(flo, md->mode[k].frequency_hz);
+        if (md->mode[k].selected) fhi = fmax(fhi, md->mode[k].frequency_hz);
     double dt = o->output_interval;
     if (!(dt > 0)) dt = fmin(0.05, 1.0 / (10 * fhi));
     else if (dt > 0.25 / fhi)
@@ -76,7 +77,6 @@ static int sampling(const gal_model *m, const gal_modes *md, const gal_run_opts 
     double hh = o->time_step > 0 ? o->time_step : fmin(dt, 1.0 / (40 * fhi));
     int sub = (int)ceil(dt / hh - 1e-9);
     *dt_out = dt, *h = dt / sub;
-    w[0] = 2 * GAL_PI * flo, w[1] = 2 * GAL_PI * fhi;
     return GAL_OK;
 }
 
@@ -133,7 +133,7 @@ static void observe(run_ws *w, const gal_model *m, gal_bundle_sim_result *res, l
 }
 
 /* The bundle, its loads and its integrator at the start of the run. */
-static int start(run_ws *w, const gal_model *m, const gal_run_opts *o, double h, const double wr[2],
+static int start(run_ws *w, const gal_model *m, const gal_run_opts *o, double h,
                  gal_bundle_sim_result *res)
 {
     gal_bundle *b = w->b;
@@ -142,8 +142,10 @@ static int start(run_ws *w, const gal_model *m, const gal_run_opts *o, double h,
     gal_bundle_dyn_default_opts(&go);
     go.h = h, go.rho_inf = o->rho_inf;
     if (o->newton_tol > 0) go.newton_tol = o->newton_tol; /* simulation.newton_tolerance */
-    if (m->damping_ratio > 0) gal_damping_rayleigh_fit(m->damping_ratio, wr[0], wr[1], &go.alpha, &go.beta);
-    res->alpha = go.alpha, res->beta = go.beta, res->wake_factor = sc->bundle.wake_factor;
+    if (!(w->damping = gal_bundle_damping_modal(b, m->damping_ratio, 0))) return gal_error_status();
+    go.damping = w->damping; /* the scene's ratio at every bundle mode of the band, as the single rod's */
+    res->damping_modes = w->damping->nb, res->damping_band_hz = w->damping->band_hz;
+    res->wake_factor = sc->bundle.wake_factor;
     gal_bundle_force F = {NULL, NULL};
     if (m->loads.table) {
         gal_loads base = m->loads;
@@ -185,13 +187,13 @@ int gal_bundle_simulate(const gal_model *m, const gal_run_opts *o, gal_bundle_si
                          m->sc.path);
     run_ws w;
     memset(&w, 0, sizeof w);
-    double t0 = gal_wall_time(), dt = 0, h = 0, wr[2] = {0, 0};
+    double t0 = gal_wall_time(), dt = 0, h = 0;
     int st = gal_bundle_solve_model(m, &w.b, &w.md);
-    if (!st) st = sampling(m, &w.md, o, &dt, &h, wr);
+    if (!st) st = sampling(m, &w.md, o, &dt, &h);
     if (!st) st = result_alloc(m, o, dt, w.b->n, res);
     double t1 = gal_wall_time();
     res->setup_time_s = t1 - t0;
-    if (!st) st = start(&w, m, o, h, wr, res);
+    if (!st) st = start(&w, m, o, h, res);
     if (!st) st = integrate(&w, m, res);
     if (w.dyn) {
         gal_sim_result *c = &res->c;

@@ -119,6 +119,9 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle_si
         if (res->leeward[r]) gal_json_int(j, r + 1);
     gal_json_arr_end(j);
     gal_json_kv_int(j, "dofs", res->ndof);
+    gal_json_kv_str(j, "damping", res->damping_modes > 0 ? "modal" : res->alpha > 0 || res->beta > 0 ? "rayleigh" : "none");
+    gal_json_kv_int(j, "damping_modes", res->damping_modes);
+    gal_json_kv_num(j, "damping_band_hz", res->damping_band_hz);
     gal_json_kv_num(j, "rayleigh_alpha_per_s", res->alpha);
     gal_json_kv_num(j, "rayleigh_beta_s", res->beta);
     gal_json_obj_end(j);

@@ -3,8 +3,9 @@
  * exactly) integrated by the same generalized-alpha scheme with modified Newton as the single rod's
  * full model (full/dynamics.h), in the system's dofs z:
  *   M(s) a + C v + T^T grad U(s) = T^T F(t, s, v),
- * M(s) = T^T M_r T plus the spacers' mass and inertia (at the current spacer rotations), C Rayleigh
- * damping alpha M0 + beta K0 of the assembled system at its equilibrium, F the loads on every rod.
+ * M(s) = T^T M_r T plus the spacers' mass and inertia (at the current spacer rotations), C the
+ * structural damping (modal, gal_bundle_damping_modal, as the single rod's; or Rayleigh alpha M0 +
+ * beta K0 of the assembled system at its equilibrium), F the loads on every rod.
  * A step's increment dz is applied from the step's start (gal_bundle_step: rods' dofs added, the
  * spacers rotated by exp(dz_phi x)); the rotation dofs' velocities are angular velocities. The
  * gyroscopic terms of the spacers and the centripetal term d(T)/dt v of the spacer nodes are left
@@ -21,6 +22,7 @@
 #include "gallop/analysis/onset.h"
 #include "gallop/bundle/bundle.h"
 #include "gallop/loads/loads.h"
+#include "gallop/model/damping.h"
 #include "gallop/run/sim.h"
 
 #ifdef __cplusplus
@@ -38,6 +40,9 @@ typedef struct gal_bundle_dyn_opts {
     double h;            /* s, time step */
     double rho_inf;      /* [0, 1]; 1: no numerical dissipation */
     double alpha, beta;  /* Rayleigh damping C = alpha M0 + beta K0 (1/s, s); 0, 0: none */
+    const gal_damping *damping; /* modal damping over the system's dofs (gal_bundle_damping_modal), in
+                          * place of alpha, beta when given (not owned); left out of the iteration
+                          * matrix as the single rod's modal damping */
     double newton_tol;   /* relative residual; default 1e-8 (simulation.newton_tolerance; above
                           * GAL_NEWTON_TOL_STRICT accepted only after a correction that reduced it) */
     int max_newton;      /* per step; default 20 */
@@ -61,6 +66,11 @@ typedef struct gal_bundle_dyn {
 } gal_bundle_dyn;
 
 void gal_bundle_dyn_default_opts(gal_bundle_dyn_opts *o);
+/* The single rod's modal damping (model/damping.h) for the assembled bundle b about its equilibrium
+ * (b->state): zeta on every bundle mode up to band_hz (<= 0: GAL_DAMPING_BAND_HZ), at most
+ * GAL_DAMPING_MAX_MODES, none above; c->mphi holds M0 phi_k over the system's dofs. zeta = 0: the
+ * NONE kind. NULL with a message on failure. Free with gal_damping_free. */
+gal_damping *gal_bundle_damping_modal(gal_bundle *b, double zeta, double band_hz);
 /* Start at the state s0 (nstate; b->state when NULL) with velocity v0 (ndof, NULL: at rest); the
  * damping's K0 and M0 are taken at b->state. NULL with a message on failure. */
 gal_bundle_dyn *gal_bundle_dyn_alloc(gal_bundle *b, const double *s0, const double *v0,
@@ -90,8 +100,8 @@ void gal_bundle_loads_clear(gal_bundle_loads *bl);
 int gal_bundle_loads_eval(void *ctx, gal_bundle *b, double t, const double *s, const double *v, double *f);
 
 /* A galloping run of the explicit bundle (`gallop simulate --model full` on [bundle] model =
- * explicit): the bundle's statics and modes (gal_bundle_solve_model), Rayleigh damping giving the
- * scene's ratio at the lowest and highest selected bundle modes, the loads above, the same output
+ * explicit): the bundle's statics and modes (gal_bundle_solve_model), modal damping at the scene's
+ * ratio on every bundle mode in the band (gal_bundle_damping_modal), the loads above, the same output
  * interval and time step rules as the single rod's full model (run/sim.h). res->c holds the
  * bundle's centroid: per probe its horizontal, vertical and along displacement (the mean of the
  * sub-conductors') and the bundle's rotation about it (deg, in the twist column), the support
@@ -102,7 +112,9 @@ typedef struct gal_bundle_sim_result {
     int n;                       /* sub-conductors */
     int leeward[GAL_BUNDLE_MAX];
     double wake_factor;
-    double alpha, beta;          /* the Rayleigh damping applied */
+    double alpha, beta;          /* Rayleigh damping applied (0, 0: the modal damping below) */
+    int damping_modes;           /* modes the modal damping holds */
+    double damping_band_hz;      /* Hz, its band limit */
     double setup_time_s;         /* statics and modes */
     int ndof;
     double *sub;                 /* nsamples x n x 4 nprobe */
@@ -126,7 +138,7 @@ int gal_bundle_sim_write(const char *dir, const gal_scene *sc, const gal_bundle_
  * natural modes there, the loads of gal_bundle_loads_eval (every sub-conductor at its own relative
  * wind, the wake factor) linearized about it by central differences along each mode (stiffness:
  * the state stepped by gal_bundle_step, the map T re-evaluated; damping: the system's velocity),
- * the Rayleigh damping of gal_bundle_simulate projected, and analysis/onset.h's eigen-sweep
+ * the modal damping of gal_bundle_simulate projected, and analysis/onset.h's eigen-sweep
  * (gal_onset_track). The speed's columns are sub-conductor 1's at mid-span (swing, twist, angle of
  * attack); Den Hartog's column with one sub-conductor's mass and the lowest vertical bundle mode;
  * Nigol's is NaN (a bundle's torsion is not a single section's). No continuation through folds:
