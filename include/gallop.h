@@ -29,6 +29,7 @@
 /* bundle: the explicit bundle model (one rod per sub-conductor, rigid spacers) */
 #include "gallop/bundle/bundle.h"
 #include "gallop/bundle/bundle_dyn.h"
+#include "gallop/bundle/bundle_rom.h"
 /* loads: aerodynamic tables and section loads, wind */
 #include "gallop/loads/aero.h"
 #include "gallop/loads/loads.h"

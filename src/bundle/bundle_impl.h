@@ -23,4 +23,10 @@ int gal_bundle_basis(const gal_bundle *b, const double *s, int sp, double E[3][3
 size_t gal_bundle_classify_scratch(const gal_bundle *b);
 void gal_bundle_classify(const gal_bundle *b, const double *z, double *scratch, gal_mode *md);
 
+/* Sub-conductor r's run of a bundle run as a single rod's result (its probes and tensions, the
+ * rest shared with res->c), for the measures (simwrite.c); free out->trace and out->tension. */
+struct gal_bundle_sim_result;
+struct gal_sim_result;
+int gal_bundle_sim_sub(const struct gal_bundle_sim_result *res, int r, struct gal_sim_result *out);
+
 #endif

@@ -3,6 +3,7 @@
  * loads on every sub-conductor, then the steps to each output time and the probes of every
  * sub-conductor and of the bundle's centroid there. */
 #include "gallop/bundle/bundle_dyn.h"
+#include "gallop/bundle/bundle_rom.h"
 #include "gallop/base/core.h"
 #include "gallop/loads/windfield.h"
 #include "gallop/model/damping.h"
@@ -48,6 +49,7 @@ typedef struct {
     gal_bundle_loads bl;
     gal_bundle_dyn *dyn;
     gal_damping *damping;
+    gal_bundle_rom *rom;     /* the reduced run's integrator (bundle_rom.h), or NULL */
     double *u, *wind_u;
     gal_probe pa[GAL_BUNDLE_MAX][GAL_MAX_PROBES];
 } run_ws;
@@ -56,6 +58,7 @@ static void ws_clear(run_ws *w)
 {
     gal_bundle_dyn_free(w->dyn);
     gal_damping_free(w->damping);
+    gal_bundle_rom_free(w->rom);
     gal_bundle_loads_clear(&w->bl);
     gal_modes_clear(&w->md);
     gal_bundle_free(w->b);
@@ -113,7 +116,7 @@ static void observe(run_ws *w, const gal_model *m, gal_bundle_sim_result *res, l
     double *ten = res->tension + (size_t)i * n * 2, *tc = res->c.tension + 2 * i;
     tc[0] = tc[1] = 0;
     for (int r = 0; r < n; r++) {
-        const double *q = w->dyn->s + (size_t)r * nq, *qe = b->state + (size_t)r * nq;
+        const double *q = (w->rom ? w->rom->s : w->dyn->s) + (size_t)r * nq, *qe = b->state + (size_t)r * nq;
         for (int k = 0; k < nq; k++) w->u[k] = q[k] - qe[k];
         gal_probe_sample(b->rod[r], w->pa[r], np, w->u, sub + (size_t)r * 4 * np);
         ten[2 * r] = gal_probe_tension(b->rod[r], q, 0), ten[2 * r + 1] = gal_probe_tension(b->rod[r], q, nel - 1);
@@ -158,6 +161,16 @@ static int start(run_ws *w, const gal_model *m, const gal_run_opts *o, double h,
     for (int r = 0; r < b->n; r++)
         for (int k = 0; k < m->nprobe; k++) w->pa[r][k] = gal_probe_locate(b->rod[r], m->probe[k]);
     if (!(w->u = malloc((size_t)b->rod[0]->nq * sizeof(double)))) return gal_error(GAL_ENOMEM, "out of memory");
+    if (res->c.kind == GAL_MODEL_REDUCED) {
+        gal_bundle_rom_opts ro;
+        gal_bundle_rom_default_opts(&ro);
+        ro.h = go.h, ro.rho_inf = go.rho_inf, ro.damping = go.damping; /* the full model's modal damping */
+        if (o->newton_tol > 0) ro.newton_tol = o->newton_tol;
+        gal_bundle_loads mean;
+        if (F.eval) gal_bundle_rom_mean_loads(&w->bl, &mean), ro.mean_loads = &mean;
+        w->rom = gal_bundle_rom_alloc(b, &w->md, &ro, &F);
+        return w->rom ? GAL_OK : GAL_EFAIL;
+    }
     w->dyn = gal_bundle_dyn_alloc(b, NULL, NULL, &go, &F);
     return w->dyn ? GAL_OK : GAL_EFAIL;
 }
@@ -167,18 +180,30 @@ static int integrate(run_ws *w, const gal_model *m, gal_bundle_sim_result *res)
     gal_sim_result *c = &res->c;
     long ns = c->nsamples;
     int st = GAL_OK, tty = isatty(2);
+    double next_check = 0;
     for (long i = 0; i < ns && !st; i++) {
-        long nsteps = (long)floor(c->time[i] / w->dyn->o.h + 0.5);
-        while (w->dyn->steps < nsteps && !st) st = gal_bundle_dyn_step(w->dyn);
+        if (w->rom) { /* checked every simulated second and at the end (as the single rod's) */
+            long nsteps = (long)floor(c->time[i] / w->rom->o.h + 0.5);
+            while (w->rom->steps < nsteps && !st) st = gal_bundle_rom_step(w->rom);
+            if (!st && (w->rom->t >= next_check - 1e-9 || i == ns - 1)) {
+                st = gal_bundle_rom_selfcheck(w->rom, m->sc.model.residual_tolerance, m->sc.model.on_invalid_warn,
+                                              m->sc.path);
+                while (next_check <= w->rom->t + 1e-9) next_check += 1.0;
+            }
+        } else {
+            long nsteps = (long)floor(c->time[i] / w->dyn->o.h + 0.5);
+            while (w->dyn->steps < nsteps && !st) st = gal_bundle_dyn_step(w->dyn);
+        }
         if (st) break;
         observe(w, m, res, i);
-        if (tty && i % 200 == 0) fprintf(stderr, "\rexplicit bundle: t = %.1f of %.1f s", c->time[i], c->time[ns - 1]);
+        if (tty && i % 200 == 0) fprintf(stderr, "\rexplicit bundle (%s): t = %.1f of %.1f s", w->rom ? "reduced" : "full", c->time[i],
+                                         c->time[ns - 1]);
     }
     if (tty) fprintf(stderr, "\n");
     return st;
 }
 
-int gal_bundle_simulate(const gal_model *m, const gal_run_opts *o, gal_bundle_sim_result *res)
+static int simulate(const gal_model *m, const gal_run_opts *o, gal_model_kind kind, gal_bundle_sim_result *res)
 {
     memset(res, 0, sizeof *res);
     if (m->start_mean_wind)
@@ -191,6 +216,7 @@ int gal_bundle_simulate(const gal_model *m, const gal_run_opts *o, gal_bundle_si
     int st = gal_bundle_solve_model(m, &w.b, &w.md);
     if (!st) st = sampling(m, &w.md, o, &dt, &h);
     if (!st) st = result_alloc(m, o, dt, w.b->n, res);
+    res->c.kind = kind;
     double t1 = gal_wall_time();
     res->setup_time_s = t1 - t0;
     if (!st) st = start(&w, m, o, h, res);
@@ -201,8 +227,29 @@ int gal_bundle_simulate(const gal_model *m, const gal_run_opts *o, gal_bundle_si
         c->factorizations = w.dyn->factorizations, c->force_evaluations = w.dyn->force_evaluations;
         c->rejected_steps = w.dyn->rejected_steps;
     }
+    if (w.rom) {
+        gal_sim_result *c = &res->c;
+        gal_bundle_rom *r = w.rom;
+        c->time_step_s = h, c->steps = r->steps, c->newton_iterations = r->newton_iterations;
+        c->factorizations = r->tangents, c->force_evaluations = r->force_evaluations;
+        c->rejected_steps = r->rejected_steps, c->basis = c->basis_start = r->r, c->build_time_s = r->build_time_s;
+        c->checked = r->checks > 0, c->residual_max = r->residual_max, c->valid = r->valid;
+    }
     if (w.b) res->ndof = w.b->ndof;
     res->c.wall_time_s = gal_wall_time() - t1;
     ws_clear(&w);
+    return st;
+}
+
+int gal_bundle_simulate(const gal_model *m, const gal_run_opts *o, gal_bundle_sim_result *res)
+{
+    return simulate(m, o, GAL_MODEL_FULL, res);
+}
+
+int gal_bundle_simulate_reduced(const gal_model *m, const gal_run_opts *o, gal_bundle_sim_result *res)
+{
+    int st = simulate(m, o, GAL_MODEL_REDUCED, res);
+    if (!st && !res->c.checked) /* never a reduced result it has not checked */
+        st = gal_error(GAL_EFAIL, "%s: the explicit bundle's reduced run: its self-check did not run", m->sc.path);
     return st;
 }

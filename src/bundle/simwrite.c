@@ -6,6 +6,7 @@
 #include "gallop/base/core.h"
 #include "gallop/analysis/measure.h"
 #include "gallop/output/outset.h"
+#include "bundle_impl.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -100,7 +101,7 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle_si
     gal_json_kv_num(j, "output_interval_s", c->dt_out);
     gal_json_key(j, "trace_csv");
     gal_json_obj_begin(j);
-    gal_json_kv_str(j, "model", "full");
+    gal_json_kv_str(j, "model", c->kind == GAL_MODEL_REDUCED ? "reduced" : "full");
     gal_json_kv_str(j, "holds", "time_s; per probe p<a> the bundle's centroid: displacements from the equilibrium "
                     "(horizontal y downwind, vertical z up, along x, m; the mean of the sub-conductors') and the "
                     "bundle's rotation about it in the twist column, deg; the support tensions summed over the "
@@ -132,6 +133,13 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle_si
     gal_json_kv_int(j, "newton_iterations", c->newton_iterations);
     gal_json_kv_int(j, "factorizations", c->factorizations);
     gal_json_kv_int(j, "rejected_steps", c->rejected_steps);
+    if (c->checked) { /* the reduced model's self-check (bundle_rom.h) */
+        gal_json_kv_int(j, "basis", c->basis);
+        gal_json_kv_num(j, "build_time_s", c->build_time_s);
+        gal_json_kv_num(j, "residual_max", c->residual_max);
+        gal_json_key(j, "valid");
+        gal_json_bool(j, c->valid);
+    }
     return json_probes(j, res);
 }
 

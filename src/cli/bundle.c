@@ -1,4 +1,4 @@
-/* cli/bundle.c: `gallop modes SCENE` and `gallop simulate SCENE --model full` on an explicit bundle
+/* cli/bundle.c: `gallop modes SCENE` and `gallop simulate SCENE [--model reduced|full]` on an explicit bundle
  * ([bundle] model = explicit): the bundle's statics and modes (src/bundle/), a table on stdout,
  * files in DIR; a galloping run of the assembled bundle, trace.csv and summary.json. */
 #include <stdio.h>
@@ -35,7 +35,7 @@ int gal_cli_modes_bundle(const gal_scene *sc, const char *outdir)
     return gal_exit_code(st);
 }
 
-int gal_cli_simulate_bundle(const gal_scene *sc, const char *outdir)
+int gal_cli_simulate_bundle(const gal_scene *sc, const char *outdir, int reduced)
 {
     int st;
     gal_model *m = gal_model_alloc(sc, &st);
@@ -43,16 +43,22 @@ int gal_cli_simulate_bundle(const gal_scene *sc, const char *outdir)
     gal_run_opts_from_scene(sc, &o);
     gal_bundle_sim_result r;
     memset(&r, 0, sizeof r);
-    if (!st) st = gal_bundle_simulate(m, &o, &r);
+    if (!st) st = reduced ? gal_bundle_simulate_reduced(m, &o, &r) : gal_bundle_simulate(m, &o, &r);
     gal_sim_measures ms;
     if (!st) st = gal_sim_measure(&r.c, gal_sim_mid_probe(&r.c), -1, &ms);
     if (!st) st = gal_bundle_sim_write(outdir, sc, &r);
     if (!st) {
-        printf("explicit bundle of %d, %d dofs: set-up %.3f s, wall %.3f s (%.4f s per simulated s); centroid: "
+        printf("explicit bundle of %d, %s model, %d dofs: set-up %.3f s, wall %.3f s (%.4f s per simulated s); centroid: "
                "vertical p-p %.4g m at %.4g Hz, horizontal p-p %.4g m, rotation p-p %.3g deg, steady after %.1f s\n",
-               r.n, r.ndof, r.setup_time_s, r.c.wall_time_s, r.c.wall_time_s / r.c.time[r.c.nsamples - 1],
+               r.n, reduced ? "reduced" : "full", r.ndof, r.setup_time_s, r.c.wall_time_s, r.c.wall_time_s / r.c.time[r.c.nsamples - 1],
                ms.peak_to_peak[1], ms.frequency_hz[1], ms.peak_to_peak[0], ms.peak_to_peak[3], ms.time_to_steady_s);
+        if (reduced) printf("reduced model: basis %d, self-check residual_max %.3g (%s)\n", r.c.basis, r.c.residual_max,
+                            r.c.valid ? "valid" : "NOT valid");
         printf("files: %s/{trace.csv,summary.json}\n", outdir);
+        if (reduced && !r.c.valid)
+            fprintf(stderr, "gallop simulate: warning: the reduced model's residual reached %.3g, past "
+                    "model.residual_tolerance = %.3g: its results are not checked (summary.json: valid: false)\n",
+                    r.c.residual_max, sc->model.residual_tolerance);
     } else {
         fprintf(stderr, "gallop simulate: %s\n", gal_error_message());
     }

@@ -19,8 +19,10 @@ int gal_cli_accuracy(int argc, char **argv);
 int gal_cli_sweep(int argc, char **argv);
 /* `gallop modes` of an explicit bundle (src/cli/bundle.c) */
 int gal_cli_modes_bundle(const struct gal_scene *sc, const char *outdir);
-/* `gallop simulate --model full` of an explicit bundle (src/cli/bundle.c) */
-int gal_cli_simulate_bundle(const struct gal_scene *sc, const char *outdir);
+/* `gallop simulate [--model reduced|full]` of an explicit bundle (src/cli/bundle.c) */
+int gal_cli_simulate_bundle(const struct gal_scene *sc, const char *outdir, int reduced);
+/* `gallop compare` of an explicit bundle (src/cli/bundle_compare.c) */
+int gal_cli_compare_bundle(const struct gal_scene *sc, const char *outdir);
 
 /* ---- the commands and their options (src/cli/usage.c) ---- */
 #include <stdio.h>

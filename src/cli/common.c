@@ -119,18 +119,17 @@ int gal_cli_scene(const gal_cli_command *c, const gal_cli_args *a, gal_scene *sc
         fprintf(stderr, "gallop %s: %s\n", c->name, gal_error_message());
         return gal_exit_code(st);
     }
-    /* the explicit bundle model has statics, modes, the onset and the full model's runs only (README "Bundles") */
-    const char *model = strcmp(c->name, "simulate") ? NULL : gal_cli_value(c, a, "model");
+    /* the explicit bundle model has statics, modes, the onset, both models' runs, compare and sweep (README "Bundles") */
     if (sc->bundle.subconductors > 1 && sc->bundle.explicit_model && strcmp(c->name, "modes") &&
         strcmp(c->name, "check") && strcmp(c->name, "wind") && strcmp(c->name, "stability") &&
-        strcmp(c->name, "sweep") && /* sweep: the explicit full model per case (run/sweep.h) */
-        !(model && !strcmp(model, "full"))) {
+        strcmp(c->name, "simulate") && strcmp(c->name, "compare") &&
+        strcmp(c->name, "sweep")) { /* sweep: the explicit full model per case (run/sweep.h) */
         int ln = sc->bundle.model_line;
         char at[64] = "--set";
         if (ln > 0) snprintf(at, sizeof at, "%d", ln);
         fprintf(stderr, "gallop %s: %s%s%s: [bundle] model = explicit: `gallop %s` does not run the explicit "
                 "bundle model (it has statics and modes, `gallop modes`, the coupled onset, `gallop stability`, "
-                "and the full model's runs, `gallop simulate --model full`); allowed: model = equivalent, which runs every command\n", c->name, ln >= 0 ? a->operand : "", ln >= 0 ? ":" : "", at, c->name);
+                "the full and reduced models' runs, `gallop simulate`, `gallop compare`, and `gallop sweep` with the full model); allowed: model = equivalent, which runs every command\n", c->name, ln >= 0 ? a->operand : "", ln >= 0 ? ":" : "", at, c->name);
         return 2;
     }
     if (dir) {

@@ -74,7 +74,8 @@ int gal_cli_simulate(int argc, char **argv)
             return 2;
         }
     }
-    if (sc.bundle.subconductors > 1 && sc.bundle.explicit_model) return gal_cli_simulate_bundle(&sc, outdir);
+    if (sc.bundle.subconductors > 1 && sc.bundle.explicit_model)
+        return gal_cli_simulate_bundle(&sc, outdir, T == &gal_integrator_reduced);
     gal_model *m;
     gal_data *d;
     gal_run_opts o;
@@ -104,6 +105,7 @@ int gal_cli_compare(int argc, char **argv)
     const char *outdir = NULL;
     int rc = gal_cli_load_scene(argc, argv, &sc, &outdir);
     if (rc) return rc;
+    if (sc.bundle.subconductors > 1 && sc.bundle.explicit_model) return gal_cli_compare_bundle(&sc, outdir);
     gal_model *m;
     gal_data *d;
     gal_run_opts o;

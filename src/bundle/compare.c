@@ -1,0 +1,183 @@
+/* compare.c: the output files of `gallop compare` on the explicit bundle (bundle_rom.h; README
+ * "Bundles"): both runs' centroid at the mid probe under the single rod's compare.csv names, then
+ * every sub-conductor's suffixed _s<k> with its support tensions; summary.json with the single
+ * rod's figures for the centroid and, per sub-conductor, both runs' measures and their errors. */
+#include "gallop/bundle/bundle_rom.h"
+#include "gallop/base/core.h"
+#include "gallop/analysis/measure.h"
+#include "gallop/output/outset.h"
+#include "gallop/output/simreport.h"
+#include "bundle_impl.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double relerr(double a, double b)
+{
+    return fabs(a - b) / fmax(fabs(b), 1e-300);
+}
+
+static void csv_header(FILE *fp, int n)
+{
+    fprintf(fp, "time_s,full_vertical_m,reduced_vertical_m,full_horizontal_m,reduced_horizontal_m,full_twist_deg,"
+                "reduced_twist_deg");
+    for (int r = 1; r <= n; r++)
+        fprintf(fp, ",full_vertical_m_s%d,reduced_vertical_m_s%d,full_horizontal_m_s%d,reduced_horizontal_m_s%d,"
+                    "full_twist_deg_s%d,reduced_twist_deg_s%d,full_tension_left_n_s%d,reduced_tension_left_n_s%d,"
+                    "full_tension_right_n_s%d,reduced_tension_right_n_s%d", r, r, r, r, r, r, r, r, r, r);
+    fputc('\n', fp);
+}
+
+static int write_csv(gal_outset *o, const gal_bundle_sim_result *F, const gal_bundle_sim_result *R)
+{
+    FILE *fp = gal_outset_open(o, "compare.csv");
+    if (!fp) return GAL_EIO;
+    int n = F->n, kp = gal_sim_mid_probe(&F->c);
+    size_t np4 = 4 * (size_t)F->c.nprobe;
+    csv_header(fp, n);
+    long ns = F->c.nsamples < R->c.nsamples ? F->c.nsamples : R->c.nsamples;
+    for (long i = 0; i < ns; i++) {
+        const double *a = F->c.trace + i * np4 + 4 * kp, *b = R->c.trace + i * np4 + 4 * kp;
+        fprintf(fp, "%.9g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g", F->c.time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
+        for (int r = 0; r < n; r++) {
+            const double *sa = F->sub + ((size_t)i * n + r) * np4 + 4 * kp, *sb = R->sub + ((size_t)i * n + r) * np4 + 4 * kp;
+            const double *ta = F->tension + ((size_t)i * n + r) * 2, *tb = R->tension + ((size_t)i * n + r) * 2;
+            fprintf(fp, ",%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g", sa[1], sb[1], sa[0], sb[0], sa[3], sb[3],
+                    ta[0], tb[0], ta[1], tb[1]);
+        }
+        fputc('\n', fp);
+    }
+    return gal_outset_close(o, fp);
+}
+
+static void json_measures(gal_json *j, const gal_sim_measures *m)
+{
+    gal_json_kv_num(j, "frequency_hz", m->frequency_hz[1]);
+    gal_json_kv_num(j, "vertical_peak_to_peak_m", m->peak_to_peak[1]);
+    gal_json_kv_num(j, "horizontal_peak_to_peak_m", m->peak_to_peak[0]);
+    gal_json_kv_num(j, "twist_peak_to_peak_deg", m->peak_to_peak[3]);
+    gal_json_kv_num(j, "tension_min_n", m->tension_min);
+    gal_json_kv_num(j, "tension_max_n", m->tension_max);
+}
+
+static void json_errors(gal_json *j, const gal_sim_measures *f, const gal_sim_measures *r)
+{
+    gal_json_key(j, "errors");
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "frequency", relerr(r->frequency_hz[1], f->frequency_hz[1]));
+    gal_json_kv_num(j, "vertical", relerr(r->peak_to_peak[1], f->peak_to_peak[1]));
+    gal_json_kv_num(j, "horizontal", relerr(r->peak_to_peak[0], f->peak_to_peak[0]));
+    gal_json_kv_num(j, "twist", relerr(r->peak_to_peak[3], f->peak_to_peak[3]));
+    gal_json_kv_num(j, "tension_max", relerr(r->tension_max, f->tension_max));
+    gal_json_obj_end(j);
+}
+
+static void json_run(gal_json *j, const char *key, const gal_bundle_sim_result *b, const gal_sim_measures *m)
+{
+    const gal_sim_result *r = &b->c;
+    gal_json_key(j, key);
+    gal_json_obj_begin(j);
+    gal_json_kv_str(j, "model", r->kind == GAL_MODEL_REDUCED ? "reduced" : "full");
+    gal_json_kv_num(j, "setup_time_s", b->setup_time_s);
+    gal_json_kv_num(j, "wall_time_s", r->wall_time_s);
+    gal_json_kv_num(j, "wall_time_per_simulated_s", r->wall_time_s / r->time[r->nsamples - 1]);
+    json_measures(j, m);
+    gal_json_kv_int(j, "steps", r->steps);
+    gal_json_kv_int(j, "newton_iterations", r->newton_iterations);
+    if (r->checked) {
+        gal_json_kv_int(j, "basis", r->basis);
+        gal_json_kv_num(j, "build_time_s", r->build_time_s);
+        gal_json_kv_num(j, "residual_max", r->residual_max);
+        gal_json_key(j, "valid");
+        gal_json_bool(j, r->valid);
+    }
+    gal_json_obj_end(j);
+}
+
+/* Per sub-conductor: both runs' measures at the mid probe over the full run's steady window. */
+static int json_subs(gal_json *j, const gal_bundle_sim_result *F, const gal_bundle_sim_result *R, double from)
+{
+    int st = GAL_OK, kp = gal_sim_mid_probe(&F->c);
+    gal_json_key(j, "subconductors");
+    gal_json_arr_begin(j);
+    for (int r = 0; r < F->n && !st; r++) {
+        gal_sim_result sf, sr;
+        gal_sim_measures mf, mr;
+        memset(&sf, 0, sizeof sf), memset(&sr, 0, sizeof sr);
+        st = gal_bundle_sim_sub(F, r, &sf);
+        if (!st) st = gal_bundle_sim_sub(R, r, &sr);
+        if (!st) st = gal_sim_measure(&sf, kp, from, &mf);
+        if (!st) st = gal_sim_measure(&sr, kp, from, &mr);
+        if (!st) {
+            gal_json_obj_begin(j);
+            gal_json_kv_int(j, "sub", r + 1);
+            gal_json_key(j, "full");
+            gal_json_obj_begin(j), json_measures(j, &mf), gal_json_obj_end(j);
+            gal_json_key(j, "reduced");
+            gal_json_obj_begin(j), json_measures(j, &mr), gal_json_obj_end(j);
+            json_errors(j, &mf, &mr);
+            gal_json_obj_end(j);
+        }
+        free(sf.trace), free(sf.tension), free(sr.trace), free(sr.tension);
+    }
+    gal_json_arr_end(j);
+    return st;
+}
+
+static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle_sim_result *F,
+                         const gal_bundle_sim_result *R, const gal_sim_measures *mf, const gal_sim_measures *mr,
+                         const gal_compare_figures *c)
+{
+    gal_json *j = gal_outset_summary(o);
+    if (!j) return GAL_EIO;
+    gal_json_kv_str(j, "command", "compare");
+    gal_json_kv_str(j, "scene", sc->path);
+    gal_json_kv_num(j, "duration_s", F->c.time[F->c.nsamples - 1]);
+    gal_json_kv_num(j, "steady_from_s", mf->steady_from_s);
+    gal_json_key(j, "bundle");
+    gal_json_obj_begin(j);
+    gal_json_kv_int(j, "subconductors", F->n);
+    gal_json_kv_str(j, "model", "explicit");
+    gal_json_kv_int(j, "dofs", F->ndof);
+    gal_json_kv_str(j, "centroid", "full and reduced: the bundle's centroid at the mid probe (its rotation in twist)");
+    gal_json_obj_end(j);
+    json_run(j, "full", F, mf);
+    json_run(j, "reduced", R, mr);
+    gal_json_kv_num(j, "frequency_error", c->frequency_error);
+    gal_json_kv_num(j, "amplitude_error", c->amplitude_error);
+    gal_json_key(j, "amplitude_errors");
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "vertical", c->err_vertical);
+    gal_json_kv_num(j, "horizontal", c->err_horizontal);
+    gal_json_kv_num(j, "twist", c->err_twist);
+    gal_json_obj_end(j);
+    gal_json_kv_num(j, "speedup", c->speedup);
+    return json_subs(j, F, R, mf->steady_from_s);
+}
+
+int gal_bundle_write_compare(const char *dir, const gal_scene *sc, const gal_bundle_sim_result *full,
+                             const gal_bundle_sim_result *red, gal_compare_figures *out)
+{
+    gal_sim_measures mf, mr;
+    int st = gal_sim_measure(&full->c, gal_sim_mid_probe(&full->c), -1, &mf);
+    if (!st) st = gal_sim_measure(&red->c, gal_sim_mid_probe(&red->c), mf.steady_from_s, &mr);
+    if (st) return st;
+    gal_compare_figures c;
+    c.frequency_error = relerr(mr.frequency_hz[1], mf.frequency_hz[1]);
+    c.err_vertical = relerr(mr.peak_to_peak[1], mf.peak_to_peak[1]);
+    c.err_horizontal = relerr(mr.peak_to_peak[0], mf.peak_to_peak[0]);
+    c.err_twist = relerr(mr.peak_to_peak[3], mf.peak_to_peak[3]);
+    c.amplitude_error = fmax(c.err_vertical, fmax(c.err_horizontal, c.err_twist));
+    c.speedup = full->c.wall_time_s / red->c.wall_time_s;
+    if (out) *out = c;
+    gal_outset *o;
+    st = gal_outset_begin(&o, dir, "compare");
+    if (!st) st = gal_outset_scene(o, sc);
+    if (!st) st = write_csv(o, full, red);
+    if (!st) st = write_summary(o, sc, full, red, &mf, &mr, &c);
+    if (!st) st = gal_outset_commit(o);
+    gal_outset_free(o);
+    return st;
+}

@@ -1,0 +1,351 @@
+/* rom.c: the explicit bundle's reduced model (bundle_rom.h): the basis (the selected bundle modes and
+ * their modal derivatives from the assembled tangent, M0-orthonormalized) and the generalized-alpha
+ * steps with modified Newton on the reduced tangent, every term the assembled system's at the
+ * reconstructed state. */
+#include "gallop/bundle/bundle_rom.h"
+#include "gallop/base/core.h"
+#include "bundle_impl.h"
+#include "rom_impl.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/chol.h"
+#include "gallop/full/dynamics.h"
+
+void gal_bundle_rom_default_opts(gal_bundle_rom_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->derivatives = 1;
+    o->h = 0.01;
+    o->rho_inf = 1.0;
+    o->newton_tol = 1e-8;
+    o->max_newton = 20;
+    o->max_halvings = 6;
+    o->fd_step_m = 1e-3;
+    o->deflation_tol = 1e-6;
+    o->load_vectors = 2;
+}
+
+gal_bundle_rom *gal_bundle_rom_free(gal_bundle_rom *m)
+{
+    if (!m) return NULL;
+    free(m->V), free(m->Cr), free(m->x), free(m->v), free(m->a), free(m->fi), free(m->fe), free(m->s);
+    free(m->s1), free(m->x1), free(m->v1), free(m->a1), free(m->fi1), free(m->fe1), free(m->res), free(m->dx);
+    free(m->J), free(m->Kl), free(m->Cl), free(m->tmpr), free(m->piv), free(m->piv2), free(m->wr), free(m->z), free(m->g), free(m->wrk);
+    gal_csc_free(m->K0), gal_csc_free(m->M0);
+    gal_chol_free(m->chol0);
+    free(m);
+    return NULL;
+}
+
+/* Y (r x k) = V^T X (X: ndof x k), or X = V Y (trans "N"): k <= 2 vectors in one pass over V,
+ * column-major. (Plain loops: the BLAS would start its threads on these sizes, in the library.) */
+static void multi(const gal_bundle_rom *m, const char *trans, int k, const double *X, double *Y)
+{
+    int n = m->ndof, r = m->r;
+    if (trans[0] == 'T') {
+        for (int c = 0; c < r; c++) {
+            const double *v = m->V + (size_t)c * n, *x0 = X, *x1 = X + n;
+            double s0 = 0, s1 = 0;
+            if (k == 2)
+                for (int j = 0; j < n; j++) s0 += v[j] * x0[j], s1 += v[j] * x1[j];
+            else
+                for (int j = 0; j < n; j++) s0 += v[j] * x0[j];
+            Y[c] = s0;
+            if (k == 2) Y[r + c] = s1;
+        }
+        return;
+    }
+    memset(Y, 0, (size_t)k * n * sizeof(double));
+    for (int c = 0; c < r; c++) {
+        const double *v = m->V + (size_t)c * n;
+        double a0 = X[c], a1 = k == 2 ? X[r + c] : 0;
+        double *y0 = Y, *y1 = Y + n;
+        if (k == 2)
+            for (int j = 0; j < n; j++) y0[j] += a0 * v[j], y1[j] += a1 * v[j];
+        else
+            for (int j = 0; j < n; j++) y0[j] += a0 * v[j];
+    }
+}
+
+void gal_bundle_rom_project(const gal_bundle_rom *m, const double *x, double *y)
+{
+    multi(m, "T", 1, x, y);
+}
+
+void gal_bundle_rom_expand(const gal_bundle_rom *m, const double *x, double *y)
+{
+    multi(m, "N", 1, x, y);
+}
+
+int gal_bundle_rom_alloc_state(gal_bundle_rom *m, int rmax)
+{
+    size_t r = (size_t)rmax, bn = (size_t)m->ndof * sizeof(double), bs = (size_t)m->b->nstate * sizeof(double);
+    m->V = malloc(r * bn);
+    m->Cr = calloc(r * r, sizeof(double)), m->J = calloc(r * r, sizeof(double)), m->tmpr = calloc(r * r, sizeof(double));
+    m->x = calloc(r, sizeof(double)), m->v = calloc(r, sizeof(double)), m->a = calloc(r, sizeof(double));
+    m->fi = calloc(r, sizeof(double)), m->fe = calloc(r, sizeof(double)), m->x1 = calloc(r, sizeof(double));
+    m->v1 = calloc(r, sizeof(double)), m->a1 = calloc(r, sizeof(double)), m->fi1 = calloc(r, sizeof(double));
+    m->fe1 = calloc(r, sizeof(double)), m->res = calloc(r, sizeof(double)), m->dx = calloc(r, sizeof(double));
+    m->piv = calloc(r, sizeof(int)), m->piv2 = calloc(r, sizeof(int)), m->wr = calloc(7 * r, sizeof(double));
+    m->s = malloc(bs), m->s1 = malloc(bs);
+    m->z = malloc(2 * bn), m->g = malloc(2 * bn);
+    m->zv = m->z ? m->z + m->ndof : NULL, m->f = m->g ? m->g + m->ndof : NULL; /* adjacent: one product */
+    m->wrk = malloc((size_t)2 * m->b->rod[0]->nq * sizeof(double));
+    if (!m->V || !m->Cr || !m->J || !m->tmpr || !m->x || !m->v || !m->a || !m->fi || !m->fe || !m->x1 || !m->v1 ||
+        !m->a1 || !m->fi1 || !m->fe1 || !m->res || !m->dx || !m->piv || !m->piv2 || !m->wr || !m->s || !m->s1 || !m->z || !m->zv ||
+        !m->g || !m->f || !m->wrk)
+        return gal_error(GAL_ENOMEM, "bundle reduced model: out of memory for a basis of %d", rmax);
+    return GAL_OK;
+}
+
+/* Kr = V^T A V (r x r, row-major) for a symmetric A on the system's pattern; uses m->z, m->g. */
+void gal_bundle_rom_project_matrix(gal_bundle_rom *m, const gal_csc *A, double *Kr)
+{
+    for (int c = 0; c < m->r; c++) {
+        gal_csc_symv(A, m->V + (size_t)c * m->ndof, m->g);
+        gal_bundle_rom_project(m, m->g, m->z);
+        for (int k = 0; k < m->r; k++) Kr[k * m->r + c] = m->z[k];
+    }
+}
+
+/* LU with partial pivoting of the r x r row-major A in place; 0 on success. */
+static int lu_factor(double *A, int r, int *piv)
+{
+    for (int k = 0; k < r; k++) {
+        int p = k;
+        for (int i = k + 1; i < r; i++)
+            if (fabs(A[i * r + k]) > fabs(A[p * r + k])) p = i;
+        piv[k] = p;
+        if (!(fabs(A[p * r + k]) > 0)) return 1;
+        if (p != k)
+            for (int j = 0; j < r; j++) {
+                double t = A[k * r + j]; A[k * r + j] = A[p * r + j]; A[p * r + j] = t;
+            }
+        for (int i = k + 1; i < r; i++) {
+            double l = A[i * r + k] /= A[k * r + k];
+            for (int j = k + 1; j < r; j++) A[i * r + j] -= l * A[k * r + j];
+        }
+    }
+    return 0;
+}
+
+/* x = A^-1 x with lu_factor's A: the row swaps first (lu_factor swapped whole rows, its multipliers
+ * with them), then the two triangular solves. */
+static void lu_solve(const double *A, int r, const int *piv, double *x)
+{
+    for (int k = 0; k < r; k++) {
+        double t = x[piv[k]]; x[piv[k]] = x[k]; x[k] = t;
+    }
+    for (int k = 0; k < r; k++)
+        for (int i = k + 1; i < r; i++) x[i] -= A[i * r + k] * x[k];
+    for (int k = r - 1; k >= 0; k--) {
+        for (int j = k + 1; j < r; j++) x[k] -= A[k * r + j] * x[j];
+        x[k] /= A[k * r + k];
+    }
+}
+
+/* The state at x, its gradient (b->grad; the tangent in b->K when asked) and the reduced internal
+ * and external forces at time t and rate xd; the round-off of the projected gradient in m->floor1. */
+int gal_bundle_rom_forces(gal_bundle_rom *m, const double *x, const double *xd, double t, int tangent, double *s,
+                          double *fi, double *fe)
+{
+    gal_bundle *b = m->b;
+    int n = m->ndof, st;
+    double *xx = m->wr + 3 * m->r, *fr = xx + 2 * m->r; /* [x xd] and [fi fe], r x 2 */
+    memcpy(xx, x, (size_t)m->r * sizeof(double)), memcpy(xx + m->r, xd, (size_t)m->r * sizeof(double));
+    multi(m, "N", m->force.eval ? 2 : 1, xx, m->z); /* z = V x, zv = V xd */
+    gal_bundle_step(b, b->state, m->z, 1.0, s);
+    if ((st = gal_bundle_eval(b, s, NULL, tangent))) return st;
+    memcpy(m->g, b->grad, (size_t)n * sizeof(double)); /* g, then f: one product for both */
+    if (tangent) { /* the round-off of the projected gradient, at each fresh tangent */
+        double fl = 0;
+        for (int c = 0; c < m->r; c++) {
+            const double *vc = m->V + (size_t)c * n;
+            double mag = 0;
+            for (int j = 0; j < n; j++) mag += fabs(vc[j] * m->g[j]);
+            fl = fmax(fl, mag);
+        }
+        m->floor1 = 1e3 * DBL_EPSILON * fl;
+    }
+    memset(m->f, 0, (size_t)n * sizeof(double));
+    if (m->force.eval) {
+        m->force_evaluations++;
+        if ((st = m->force.eval(m->force.ctx, b, t, s, m->zv, m->f))) return st;
+    }
+    multi(m, "T", 2, m->g, fr);
+    memcpy(fi, fr, (size_t)m->r * sizeof(double)), memcpy(fe, fr + m->r, (size_t)m->r * sizeof(double));
+    return GAL_OK;
+}
+
+/* y = V^T M(s) V x at the state of the last evaluation (r entries); uses m->z, m->g. */
+static void mass_mult(gal_bundle_rom *m, const double *s, const double *x, double *y)
+{
+    gal_bundle_rom_expand(m, x, m->z);
+    gal_bundle_mass_mult(m->b, s, m->z, m->g, m->wrk);
+    gal_bundle_rom_project(m, m->g, y);
+}
+
+/* a = (V^T M(s) V)^-1 (fe - Cr v - fi) at the state of the last evaluation (s). */
+int gal_bundle_rom_acceleration(gal_bundle_rom *m, const double *s, const double *v, const double *fi,
+                                const double *fe, double *a)
+{
+    int r = m->r;
+    for (int c = 0; c < r; c++) {
+        memset(m->dx, 0, (size_t)r * sizeof(double));
+        m->dx[c] = 1;
+        mass_mult(m, s, m->dx, m->res);
+        for (int k = 0; k < r; k++) m->tmpr[k * r + c] = m->res[k];
+    }
+    if (lu_factor(m->tmpr, r, m->piv2)) return gal_error(GAL_EFAIL, "bundle reduced model: singular reduced mass");
+    for (int k = 0; k < r; k++) {
+        a[k] = fe[k] - fi[k];
+        for (int j = 0; j < r; j++) a[k] -= m->Cr[k * r + j] * v[j];
+    }
+    lu_solve(m->tmpr, r, m->piv2, a);
+    return GAL_OK;
+}
+
+gal_bundle_rom *gal_bundle_rom_alloc(gal_bundle *b, const gal_modes *md, const gal_bundle_rom_opts *o,
+                                     const gal_bundle_force *force)
+{
+    double t0 = gal_wall_time();
+    gal_bundle_rom *m = calloc(1, sizeof *m);
+    if (!m) return NULL;
+    m->b = b, m->ndof = b->ndof, m->valid = 1;
+    if (o) m->o = *o;
+    else gal_bundle_rom_default_opts(&m->o);
+    if (force) m->force = *force;
+    double rho = m->o.rho_inf;
+    if (!(rho >= 0 && rho <= 1) || !(m->o.h > 0) || md->ndof != b->ndof) {
+        gal_error(GAL_EINPUT, "bundle reduced model: time step %g s, rho_inf %g, modes over %d dofs of %d; allowed: "
+                  "h > 0, 0 <= rho_inf <= 1, the bundle's modes", m->o.h, rho, md->ndof, b->ndof);
+        return gal_bundle_rom_free(m);
+    }
+    m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
+    m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);
+    if (gal_bundle_eval(b, NULL, NULL, 1)) return gal_bundle_rom_free(m);
+    m->K0 = gal_csc_clone(b->K), m->M0 = gal_csc_clone(b->M);
+    if (!m->K0 || !m->M0 || !(m->chol0 = gal_chol_alloc(b->K))) {
+        gal_error(GAL_ENOMEM, "bundle reduced model: out of memory");
+        return gal_bundle_rom_free(m);
+    }
+    memcpy(m->K0->val, b->K->val, (size_t)b->K->nnz * sizeof(double));
+    memcpy(m->M0->val, b->M->val, (size_t)b->M->nnz * sizeof(double));
+    if (gal_chol_factor(m->chol0, m->K0, 0, NULL)) {
+        gal_error(GAL_EFAIL, "bundle reduced model: the tangent at the equilibrium is not positive definite");
+        return gal_bundle_rom_free(m);
+    }
+    if (gal_bundle_rom_basis(m, md)) return gal_bundle_rom_free(m);
+    double mass = 0; /* the weight's scale of the reduced forces (Cauchy-Schwarz with V^T M0 V = I) */
+    for (int r = 0; r < b->n; r++)
+        for (int i = 0; i < b->nn; i++) mass += b->rod[r]->node_mass[i];
+    mass += b->ns * b->bp.spacer_mass;
+    m->fscale = 9.81 * sqrt(mass);
+    memset(m->x, 0, (size_t)m->r * sizeof(double));
+    if (gal_bundle_rom_forces(m, m->x, m->v, 0.0, 0, m->s, m->fi, m->fe) ||
+        gal_bundle_rom_acceleration(m, m->s, m->v, m->fi, m->fe, m->a))
+        return gal_bundle_rom_free(m);
+    m->floor0 = m->floor1;
+    m->build_time_s = gal_wall_time() - t0;
+    return m;
+}
+
+/* The residual at the increment m->dx of a step of size h into m->res (the iterate in x1, v1, a1,
+ * fi1, fe1, s1); the tangent into b->K when asked. */
+static int residual(gal_bundle_rom *m, double h, double t1, int tangent, double *rn)
+{
+    int r = m->r, st;
+    double am = m->am, af = m->af, be = m->beta, ga = m->gamma, *ma = m->wr, *vf = m->wr + r, *Ma = m->wr + 2 * r;
+    for (int k = 0; k < r; k++) {
+        m->a1[k] = (m->dx[k] - h * m->v[k]) / (be * h * h) - (0.5 - be) / be * m->a[k];
+        m->v1[k] = m->v[k] + h * ((1 - ga) * m->a[k] + ga * m->a1[k]);
+        m->x1[k] = m->x[k] + m->dx[k];
+    }
+    if ((st = gal_bundle_rom_forces(m, m->x1, m->v1, t1, tangent, m->s1, m->fi1, m->fe1))) return st;
+    for (int k = 0; k < r; k++) ma[k] = (1 - am) * m->a1[k] + am * m->a[k], vf[k] = (1 - af) * m->v1[k] + af * m->v[k];
+    mass_mult(m, m->s1, ma, Ma);
+    *rn = 0;
+    for (int k = 0; k < r; k++) {
+        double c = 0;
+        for (int j = 0; j < r; j++) c += m->Cr[k * r + j] * vf[j];
+        m->res[k] = Ma[k] + c + (1 - af) * m->fi1[k] + af * m->fi[k] - (1 - af) * m->fe1[k] - af * m->fe[k];
+        *rn = fmax(*rn, fabs(m->res[k]));
+    }
+    return GAL_OK;
+}
+
+/* J = cm I + cc Cr + (1 - af) V^T K V with K in b->K (the state of the last evaluation); factored. */
+static int refactor(gal_bundle_rom *m, double h, double t1)
+{
+    int r = m->r;
+    double cm = (1 - m->am) / (m->beta * h * h), cc = (1 - m->af) * m->gamma / (m->beta * h);
+    gal_bundle_rom_project_matrix(m, m->b->K, m->J);
+    for (int k = 0; k < r * r; k++) m->J[k] = (1 - m->af) * m->J[k] + cc * m->Cr[k];
+    if (m->Kl) /* the mean loads' Jacobians at the equilibrium (the loads' share of the tangent) */
+        for (int k = 0; k < r * r; k++) m->J[k] += (1 - m->af) * m->Kl[k] + cc * m->Cl[k];
+    for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
+    m->tangents++;
+    m->hJ = 0;
+    if (lu_factor(m->J, r, m->piv))
+        return gal_error(GAL_EFAIL, "bundle reduced model: singular iteration matrix at t = %.6g s", t1);
+    m->hJ = h;
+    return GAL_OK;
+}
+
+static void accept(gal_bundle_rom *m, double t1)
+{
+    size_t br = (size_t)m->r * sizeof(double);
+    memcpy(m->x, m->x1, br), memcpy(m->v, m->v1, br), memcpy(m->a, m->a1, br);
+    memcpy(m->fi, m->fi1, br), memcpy(m->fe, m->fe1, br);
+    memcpy(m->s, m->s1, (size_t)m->b->nstate * sizeof(double));
+    m->t = t1;
+}
+
+/* One step of size h (the state unchanged on failure): modified Newton as src/bundle/dynamics.c. */
+static int try_step(gal_bundle_rom *m, double h)
+{
+    int r = m->r, st;
+    double t1 = m->t + h, rprev = INFINITY;
+    for (int k = 0; k < r; k++) m->dx[k] = h * m->v[k] + 0.5 * h * h * m->a[k]; /* a1 = a0 */
+    for (int it = 0; it < m->o.max_newton; it++) {
+        double rn;
+        int fresh = m->hJ != h;
+        if ((st = residual(m, h, t1, fresh, &rn))) return st;
+        if (!isfinite(rn))
+            return gal_error(GAL_EFAIL, "bundle reduced model: the residual is not finite at t = %.6g s", t1);
+        m->newton_iterations++;
+        double tol = fmax(m->o.newton_tol * m->fscale, fmax(m->floor0, m->floor1));
+        if (rn <= tol && it > 0) {
+            accept(m, t1);
+            return GAL_OK;
+        }
+        if (!fresh && rn > GAL_DYN_RATE * rprev) {
+            if ((st = gal_bundle_eval(m->b, m->s1, NULL, 1))) return st;
+            fresh = 1;
+        }
+        if (fresh && (st = refactor(m, h, t1))) return st;
+        rprev = rn;
+        memcpy(m->wr, m->res, (size_t)r * sizeof(double));
+        lu_solve(m->J, r, m->piv, m->wr);
+        for (int k = 0; k < r; k++) m->dx[k] -= m->wr[k];
+    }
+    return gal_error(GAL_EFAIL, "bundle reduced model: Newton did not converge in %d iterations at t = %.6g s",
+                     m->o.max_newton, t1);
+}
+
+static int try_step_cb(void *ctx, double hh)
+{
+    return try_step(ctx, hh);
+}
+
+int gal_bundle_rom_step(gal_bundle_rom *m)
+{
+    int st = gal_dyn_subdivide(try_step_cb, m, m->o.h, m->o.max_halvings, &m->rejected_steps, &m->t,
+                               "bundle reduced model");
+    if (st == GAL_OK) m->steps++;
+    return st;
+}
