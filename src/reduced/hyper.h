@@ -1,5 +1,6 @@
 /* hyper.h: the sample of the hyper-reduced reduced model (ecsw.h), shared by ecsw.c (training,
- * fits, check) and ecsw_eval.c (the evaluations from the sample); not public. */
+ * fits, check) and ecsw_eval.c (the evaluations from the sample), and the reduced model's own
+ * evaluations (rom.c) used by its step (rom_step.c); not public. */
 #ifndef GALLOP_REDUCED_HYPER_H
 #define GALLOP_REDUCED_HYPER_H
 
@@ -58,5 +59,11 @@ int gal_rom_hyper_fit_all(gal_rom *m);
 /* Element e's gradient at the state in m->q projected on V into col (r), and its Hessian
  * projected, V_e^T H_e V_e (plus the curvature on the manifold), into Kr (r x r). */
 int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr);
+
+/* The reduced internal force at x (energy into m->U1; the reduced tangent into Kr unless NULL) and
+ * the reduced loads at (t, x, xd): from the samples when hyper-reduced, else from the whole rod;
+ * counted in m's counters (rom.c; used by the step, rom_step.c). */
+int gal_rom_eval_internal(gal_rom *m, const double *x, double *f, double *Kr);
+int gal_rom_eval_external(gal_rom *m, double t, const double *x, const double *xd, double *f);
 
 #endif

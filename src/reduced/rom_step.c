@@ -1,0 +1,265 @@
+/* rom_step.c: the time step of the recomputed reduced model (rom.h): the generalized-alpha method
+ * with (modified) Newton on the reduced tangent, step halving on failure, and the sample's periodic
+ * check. With V^T M V = I the residual at the generalized mid-point is
+ *   R = a_m + Cr v_f + (1-af) (fi(x1) - fe1) + af (fi(x0) - fe0),
+ * a_m = (1-am) a1 + am a0, v_f = (1-af) v1 + af v0, and x1, v1 the Newmark updates in a1. */
+#include "gallop/reduced/rom.h"
+#include "gallop/base/core.h"
+#include "gallop/reduced/ecsw.h"
+#include "reduced/hyper.h"
+#include "reduced/qm.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* LU with partial pivoting of the r x r row-major A in place; 0 on success. */
+static int lu_factor(double *A, int r, int *piv)
+{
+    for (int k = 0; k < r; k++) {
+        int p = k;
+        for (int i = k + 1; i < r; i++)
+            if (fabs(A[i * r + k]) > fabs(A[p * r + k])) p = i;
+        piv[k] = p;
+        if (A[p * r + k] == 0) return -1;
+        if (p != k)
+            for (int j = 0; j < r; j++) { double t = A[k * r + j]; A[k * r + j] = A[p * r + j]; A[p * r + j] = t; }
+        for (int i = k + 1; i < r; i++) {
+            double l = A[i * r + k] /= A[k * r + k];
+            for (int j = k + 1; j < r; j++) A[i * r + j] -= l * A[k * r + j];
+        }
+    }
+    return 0;
+}
+
+static void lu_solve(const double *A, int r, const int *piv, double *b)
+{
+    for (int k = 0; k < r; k++) {
+        double t = b[piv[k]]; b[piv[k]] = b[k]; b[k] = t;
+        for (int i = k + 1; i < r; i++) b[i] -= A[i * r + k] * b[k];
+    }
+    for (int k = r - 1; k >= 0; k--) {
+        for (int j = k + 1; j < r; j++) b[k] -= A[k * r + j] * b[j];
+        b[k] /= A[k * r + k];
+    }
+}
+
+int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, r = m->r;
+    m->t = t;
+    m->hJ = 0, m->next_hyper_check = t + gal_rom_check_interval(m, m->o.hyper_check_interval);
+    /* x = V^T M (q - q_eq), x' = V^T M v (on the manifold: the closest state on it) */
+    if (m->qm) {
+        int st = gal_rom_qm_project_state(m, q, v, m->x, m->v);
+        if (st) return st;
+    }
+    for (int s = 0; s < 2 && !m->qm; s++) {
+        double *dst = s ? m->v : m->x;
+        if (s && !v) { memset(dst, 0, (size_t)r * sizeof(double)); break; }
+        for (int d = 0; d < n; d++) {
+            int k = rod->free_q[d];
+            m->wn2[d] = s ? v[k] : q[k] - m->q_eq[k];
+        }
+        gal_rod_mass_mult(rod, m->wn2, m->wn);
+        for (int k = 0; k < r; k++) {
+            double e = 0;
+            for (int d = 0; d < n; d++) e += m->V[(size_t)k * n + d] * m->wn[d];
+            dst[k] = e;
+        }
+    }
+    int st = gal_rom_eval_internal(m, m->x, m->fi, NULL);
+    if (!st) st = gal_rom_eval_external(m, t, m->x, m->v, m->fe);
+    if (st) return st;
+    m->U = m->U1;
+    if (m->qm && m->qm->inertia) { /* M(x) a = fe - fi - c(x, v) - C(x) v (qm.h) */
+        for (int i = 0; i < r; i++) m->fr[i] = m->fe[i] - m->fi[i];
+        return gal_rom_qm_acceleration(m, m->x, m->v, m->fr, m->a);
+    }
+    /* a = fe - fi - Cr v */
+    for (int i = 0; i < r; i++) {
+        double c = 0;
+        for (int j = 0; j < r; j++) c += m->Cr[i * r + j] * m->v[j];
+        m->a[i] = m->fe[i] - m->fi[i] - c;
+    }
+    return GAL_OK;
+}
+
+/* The Newmark updates of x1, v1 from the current a1. */
+static void newmark(gal_rom *m, double h)
+{
+    for (int k = 0; k < m->r; k++) {
+        m->x1[k] = m->x[k] + h * m->v[k] + h * h * ((0.5 - m->beta) * m->a[k] + m->beta * m->a1[k]);
+        m->v1[k] = m->v[k] + h * ((1 - m->gamma) * m->a[k] + m->gamma * m->a1[k]);
+    }
+}
+
+/* The discrete gradient of the internal force over the step (Gonzalez 1996) into m->fdg:
+ * fbar = (fi(x0) + fi(x1)) / 2 corrected along dx = x1 - x0 so that fdg . dx = U(x1) - U(x0)
+ * exactly: with the trapezoidal Newmark updates (rho_inf = 1) the step then conserves T + U. Not
+ * where U(x1) - U(x0) - fbar . dx is within the energy's round-off m->ufloor: the correction would
+ * be that round-off over |dx|, noise that stops Newton on small steps (free vibration of 1 mm). */
+static void discrete_gradient(gal_rom *m)
+{
+    int r = m->r;
+    double dd = 0, fd = 0, xs = 0;
+    for (int i = 0; i < r; i++) {
+        double dx = m->x1[i] - m->x[i];
+        m->fdg[i] = 0.5 * (m->fi[i] + m->fi1[i]);
+        dd += dx * dx, fd += m->fdg[i] * dx, xs += m->x1[i] * m->x1[i] + m->x[i] * m->x[i];
+    }
+    if (!(dd > 1e-28 * xs) || !(dd > 0) || !(fabs(m->U1 - m->U - fd) > m->ufloor)) return;
+    double c = (m->U1 - m->U - fd) / dd;
+    for (int i = 0; i < r; i++) m->fdg[i] += c * (m->x1[i] - m->x[i]);
+}
+
+/* Residual at the generalized mid-point into m->res; returns its largest entry over the Newton
+ * tolerance newton_tol times the step's force scale (the largest |fi1| + |fe1| entry, at least the
+ * projected weights fscale; not below the round-off floor ffloor), converged at <= 1, and into
+ * *strict the same over GAL_NEWTON_TOL_STRICT's (or a tighter newton_tol's), the largest entry itself into *raw. With
+ * rho_inf = 1 the internal force is the discrete gradient. */
+static double residual(gal_rom *m, double *strict, double *raw)
+{
+    int r = m->r;
+    double am = m->am, af = m->af, rn = 0, sc = 0;
+    int dg = m->o.rho_inf == 1.0;
+    if (dg) discrete_gradient(m);
+    const gal_rom_qm *qm = m->qm && m->qm->inertia ? m->qm : NULL; /* the manifold's mass (qm.h) */
+    for (int i = 0; i < r; i++) {
+        double c = 0;
+        for (int j = 0; j < r && !qm; j++) c += m->Cr[i * r + j] * ((1 - af) * m->v1[j] + af * m->v[j]);
+        double fi = dg ? m->fdg[i] : (1 - af) * m->fi1[i] + af * m->fi[i];
+        double in = qm ? qm->f1[i] : (1 - am) * m->a1[i] + am * m->a[i];
+        if (qm) c = qm->d1[i];
+        m->res[i] = in + c + fi - (1 - af) * m->fe1[i] - af * m->fe[i];
+        rn = fmax(rn, fabs(m->res[i]));
+        sc = fmax(sc, fabs(m->fi1[i]) + fabs(m->fe1[i]));
+    }
+    double tol = m->o.newton_tol, ts = fmin(tol, GAL_NEWTON_TOL_STRICT);
+    *strict = rn / fmax(ts * fmax(sc, m->fscale), m->ffloor), *raw = rn;
+    return rn / fmax(tol * fmax(sc, m->fscale), m->ffloor);
+}
+
+/* The iteration matrix J = (1-am) I + (1-af) (gamma h Cr + beta h^2 Kr), LU-factored. The loads'
+ * derivatives are left out (measured: with them, by differences, Newton takes as many iterations
+ * at the steps used and each fresh matrix costs r more evaluations of the loads). */
+static int iteration_matrix(gal_rom *m, double h)
+{
+    int r = m->r;
+    double af = m->af, cm = 1 - m->am, cc = (1 - af) * m->gamma * h, ck = (1 - af) * m->beta * h * h;
+    for (int k = 0; k < r * r; k++) m->J[k] = cc * m->Cr[k] + ck * m->Kr[k];
+    for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
+    if (m->qm && m->qm->inertia) { /* the manifold's mass, damping and convective term */
+        for (int k = 0; k < r * r; k++) m->J[k] = ck * m->Kr[k];
+        gal_rom_qm_iteration(m, m->x1, m->v1, cm, cc, m->J);
+    }
+    m->hJ = 0;
+    if (lu_factor(m->J, r, m->piv)) return gal_error(GAL_EFAIL, "reduced model: singular iteration matrix");
+    m->hJ = h;
+    return GAL_OK;
+}
+
+/* Newton on a1 for one step of h from the state; x1, v1, a1, fi1, fe1 hold the result. */
+static int newton(gal_rom *m, double h)
+{
+    int r = m->r, st = GAL_OK;
+    double t1 = m->t + h;
+    memcpy(m->a1, m->a, (size_t)r * sizeof(double));
+    if (m->qm && m->qm->inertia) gal_rom_qm_begin(m);
+    /* modified Newton: the iteration matrix of an earlier step is kept (o.reuse_tangent) while it
+     * converges fast; a fresh tangent whenever an iteration did not gain a factor of 10 (the
+     * stretching directions are strongly nonlinear) */
+    int it, conv = 0, fresh = !(m->o.reuse_tangent && m->hJ == h), kept = !fresh;
+    double prev = INFINITY, rawprev = INFINITY;
+    for (it = 0; it < m->o.max_newton; it++) {
+        newmark(m, h);
+        if ((st = gal_rom_eval_internal(m, m->x1, m->fi1, fresh ? m->Kr : NULL))) break;
+        if ((st = gal_rom_eval_external(m, t1, m->x1, m->v1, m->fe1))) break;
+        if (m->qm && m->qm->inertia) gal_rom_qm_end(m, h);
+        double rs, raw, rn = residual(m, &rs, &raw);
+        /* as the full model (dynamics.c): within a looser tolerance than GAL_NEWTON_TOL_STRICT's
+         * only after a correction that reduced the residual */
+        if (rs <= 1 || (it > 0 && rn <= 1 && raw < rawprev)) { conv = 1; break; }
+        if (!isfinite(rn)) { st = gal_error(GAL_EFAIL, "reduced model: the residual is not finite"); break; }
+        if (!fresh && (rn > m->o.newton_contraction * prev || (kept && it >= m->o.newton_kept_max))) {
+            fresh = 1, kept = 0;
+            if ((st = gal_rom_eval_internal(m, m->x1, m->fi1, m->Kr))) break;
+        }
+        prev = rn, rawprev = raw;
+        if (fresh) {
+            if ((st = iteration_matrix(m, h))) break;
+            fresh = 0;
+        }
+        for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
+        lu_solve(m->J, r, m->piv, m->da);
+        for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
+        m->newton_iterations++;
+    }
+    if (!st && !conv)
+        st = gal_error(GAL_EFAIL, "reduced model: Newton did not converge in %d iterations at t = %.6g s "
+                       "(time step %g s)", m->o.max_newton, t1, h);
+    return st;
+}
+
+/* A step of h; on failure, two of h/2 (up to GAL_ROM_HALVINGS times deep). The state changes only
+ * on success. */
+static int step(gal_rom *m, double h, int depth)
+{
+    int r = m->r, st = newton(m, h);
+    if (st && st != GAL_ENOMEM && depth < GAL_ROM_HALVINGS) {
+        m->halvings++;
+        st = step(m, 0.5 * h, depth + 1);
+        if (!st) st = step(m, 0.5 * h, depth + 1);
+        return st;
+    }
+    if (st) return st;
+    memcpy(m->x, m->x1, (size_t)r * sizeof(double));
+    memcpy(m->v, m->v1, (size_t)r * sizeof(double));
+    memcpy(m->a, m->a1, (size_t)r * sizeof(double));
+    memcpy(m->fi, m->fi1, (size_t)r * sizeof(double));
+    memcpy(m->fe, m->fe1, (size_t)r * sizeof(double));
+    m->U = m->U1;
+    m->t += h;
+    m->steps++;
+    return GAL_OK;
+}
+
+double gal_rom_check_interval(const gal_rom *m, double base_s)
+{
+    const gal_rom_hyper *h = m->hyper;
+    if (!h || !(base_s > 0)) return base_s;
+    int nel = m->rod->p.elements, loads = m->force.eval != NULL;
+    double sample = h->set[0].n + (loads ? (h->loads ? h->set[1].n : nel) : 0);
+    double check = 2.0 * (gal_rod_element_count(m->rod) + (loads ? nel : 0)); /* the sample's and the residual's */
+    double per_s = 2.0 * sample / m->o.h; /* the steps' element evaluations per simulated second */
+    return fmax(base_s, check / (GAL_ROM_CHECK_SHARE * per_s));
+}
+
+int gal_rom_step(gal_rom *m)
+{
+    double t1 = m->t + m->o.h;
+    int st = step(m, m->o.h, 0);
+    if (st) return gal_error(st, "at t = %.6g s (after %d step halvings): %s", t1, GAL_ROM_HALVINGS, gal_error_message());
+    /* the sample against the exact projected forces every hyper_check_interval */
+    if (m->hyper && m->o.hyper_check_interval > 0 && m->t >= m->next_hyper_check - 1e-3 * m->o.h) {
+        m->next_hyper_check = m->t + gal_rom_check_interval(m, m->o.hyper_check_interval);
+        long e0 = m->element_evaluations, l0 = m->load_element_evaluations;
+        st = gal_rom_hyper_check(m, NULL); /* the exact forces over the whole rod, and the sample's */
+        m->check_element_evaluations += gal_rod_element_count(m->rod) + (m->hyper->loads ? m->rod->p.elements : 0) +
+                                        m->element_evaluations - e0 + m->load_element_evaluations - l0;
+        m->element_evaluations = e0, m->load_element_evaluations = l0;
+        if (st) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
+    }
+    return GAL_OK;
+}
+
+int gal_rom_advance(gal_rom *m, double t_target)
+{
+    while (m->t < t_target - 1e-3 * m->o.h) {
+        int st = gal_rom_step(m);
+        if (st) return st;
+    }
+    return GAL_OK;
+}
+
