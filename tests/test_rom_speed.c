@@ -2,7 +2,7 @@
  * step does not grow with the mesh"): the element evaluations of its steps (gal_rom's
  * element_evaluations and load_element_evaluations) on data/scenes/iced_gallop.ini at 60 and 240
  * elements, and the counters' own exactness (each evaluation of the loads counts its sample, or
- * the whole mesh when the loads are not sampled). */
+ * the whole mesh when the loads are not sampled); the loads once a step (o.loads_once). */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/reduced/ecsw.h"
@@ -15,13 +15,15 @@ typedef struct {
     int elements;             /* the mesh */
     double per_step;          /* energy elements evaluated per step */
     double loads_per_step;    /* load elements evaluated per step */
-    double per_evaluation;    /* energy elements per evaluation of the loads (one per Newton pass) */
+    double per_evaluation;    /* energy elements per Newton pass */
+    double load_evals;        /* evaluations of the loads per step */
+    double passes;            /* Newton passes per step */
     double check_per_step;    /* the sample checks' element evaluations per step */
 } cost;
 
 /* The reduced model of iced_gallop at `elements` over `seconds` of simulated time (hyper_loads: the
  * loads sampled or not); its counters into *c. */
-static int run(int elements, double seconds, int hyper_loads, cost *c)
+static int run_opts(int elements, double seconds, int hyper_loads, int loads_once, cost *c)
 {
     char e[64];
     snprintf(e, sizeof e, "model.elements=%d", elements);
@@ -39,6 +41,7 @@ static int run(int elements, double seconds, int hyper_loads, cost *c)
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
     ro.h = 0.01, ro.rho_inf = 0.9, ro.damping = d->damping, ro.hyper_loads = hyper_loads;
+    ro.loads_once = loads_once;
     gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
     gal_rom *m = st ? NULL : gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
     CHECK(st || m != NULL, "%s", gal_error_message());
@@ -58,15 +61,22 @@ static int run(int elements, double seconds, int hyper_loads, cost *c)
         c->elements = elements;
         c->per_step = (double)m->element_evaluations / (double)m->steps;
         c->loads_per_step = (double)m->load_element_evaluations / (double)m->steps;
-        c->per_evaluation = (double)m->element_evaluations / (double)m->force_evaluations;
+        c->passes = (double)(m->newton_iterations + m->steps) / (double)m->steps;
+        c->per_evaluation = (double)m->element_evaluations / (double)(m->newton_iterations + m->steps);
+        c->load_evals = (double)m->force_evaluations / (double)m->steps;
         c->check_per_step = (double)m->check_element_evaluations / (double)m->steps;
-        printf("    %d elements: %.1f energy and %.1f load element evaluations per step (%.1f per evaluation), "
-               "%.1f by the sample's checks\n", elements, c->per_step, c->loads_per_step, c->per_evaluation,
-               c->check_per_step);
+        printf("    %d elements: %.1f energy and %.1f load element evaluations per step (%.1f per pass, %.2f passes, "
+               "%.2f evaluations of the loads), %.1f by the sample's checks\n", elements, c->per_step, c->loads_per_step,
+               c->per_evaluation, c->passes, c->load_evals, c->check_per_step);
     }
     gal_rom_free(m);
     gal_sim_setup_clear(&s);
     return st || !m;
+}
+
+static int run(int elements, double seconds, int hyper_loads, cost *c)
+{
+    return run_opts(elements, seconds, hyper_loads, 1, c);
 }
 
 /* 4x the mesh: the steps evaluate as many elements (the samples' sizes vary by a few elements), and
@@ -106,8 +116,24 @@ static void test_counters_unsampled_loads(void)
     CHECK(a.loads_per_step >= 60, "%.1f load elements per step on 60", a.loads_per_step);
 }
 
+/* The loads once a step (o.loads_once, the default): one evaluation a step (a few more only on the
+ * steps halved), while Newton takes about two passes; at every pass (loads_once = 0) as many as the
+ * passes. */
+static void test_loads_once_a_step(void)
+{
+    cost a, b;
+    if (run_opts(60, 8, 1, 1, &a) || run_opts(60, 8, 1, 0, &b)) return;
+    CHECK(a.load_evals >= 1 && a.load_evals <= 1.01, "%.3f evaluations of the loads per step", a.load_evals);
+    CHECK(a.passes >= 1.9, "%.2f Newton passes per step", a.passes);
+    CHECK(b.load_evals >= b.passes - 1e-9 && b.load_evals >= 1.9, "loads_once = 0: %.2f evaluations, %.2f passes",
+          b.load_evals, b.passes);
+    CHECK(a.loads_per_step <= 0.55 * b.loads_per_step, "load elements per step: %.1f once, %.1f at every pass",
+          a.loads_per_step, b.loads_per_step);
+}
+
 int main(void)
 {
+    RUN(test_loads_once_a_step);
     RUN(test_cost_per_step_flat);
     RUN(test_checks_amortised);
     RUN(test_counters_unsampled_loads);

@@ -26,7 +26,7 @@ void gal_rom_default_opts(gal_rom_opts *o)
     o->max_newton = 20;
     o->hyper = 1, o->hyper_tol = 1e-2, o->hyper_check_tol = 2e-2, o->hyper_twist = 1.5, o->hyper_snapshots = 24;
     o->hyper_check_interval = 1.0, o->hyper_loads = 1, o->reuse_tangent = 1;
-    o->newton_contraction = 0.1, o->newton_kept_max = 3;
+    o->newton_contraction = 0.1, o->newton_kept_max = 3, o->loads_once = 1;
 }
 
 gal_rom *gal_rom_free(gal_rom *m)
@@ -34,7 +34,7 @@ gal_rom *gal_rom_free(gal_rom *m)
     if (!m) return NULL;
     gal_rom_hyper_free(m);
     gal_rom_qm_free(m);
-    free(m->fr);
+    free(m->fr); free(m->fe_prev);
     free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
     gal_csc_free(m->K0); gal_csc_free(m->K);
     gal_chol_free(m->chol0);
@@ -145,11 +145,11 @@ static int alloc_state(gal_rom *m, int rmax)
     m->x = calloc(r, sizeof(double)), m->v = calloc(r, sizeof(double)), m->a = calloc(r, sizeof(double));
     m->fi = calloc(r, sizeof(double)), m->fe = calloc(r, sizeof(double));
     m->x1 = malloc(br), m->v1 = malloc(br), m->a1 = malloc(br), m->fi1 = malloc(br), m->fe1 = malloc(br), m->fdg = malloc(br);
-    m->res = malloc(br), m->da = malloc(br), m->piv = malloc((size_t)r * sizeof(int)), m->fr = malloc(br);
+    m->res = malloc(br), m->da = malloc(br), m->piv = malloc((size_t)r * sizeof(int)), m->fr = malloc(br), m->fe_prev = calloc(r, sizeof(double));
     m->K0 = gal_csc_clone(m->rod->K), m->K = gal_csc_clone(m->rod->K);
     if (!m->V || !m->Cr || !m->K0r || !m->J || !m->Kr || !m->q_eq || !m->q || !m->vq || !m->gq || !m->fq ||
         !m->wn || !m->wn2 || !m->x || !m->v || !m->a || !m->fi || !m->fe || !m->x1 || !m->v1 || !m->a1 ||
-        !m->fi1 || !m->fe1 || !m->fdg || !m->res || !m->da || !m->piv || !m->K0 || !m->K || !m->fr)
+        !m->fi1 || !m->fe1 || !m->fdg || !m->res || !m->da || !m->piv || !m->K0 || !m->K || !m->fr || !m->fe_prev)
         return gal_error(GAL_ENOMEM, "reduced model: out of memory for a basis of %d", r);
     return GAL_OK;
 }

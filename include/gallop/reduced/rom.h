@@ -69,6 +69,9 @@ typedef struct gal_rom_opts {
     int newton_kept_max;    /* ... or a kept one has not converged in this many (default 3) */
     int reuse_tangent;      /* 1: keep the iteration matrix over steps while Newton converges fast
                              * (default); 0: a fresh tangent each step */
+    int loads_once;         /* 1: the loads evaluated once a step (default), after Newton's first
+                             * correction, and held over the later ones (the first pass takes them
+                             * extrapolated from the last two steps); 0: at every Newton pass */
     const double *extra;    /* ndof x nextra, column-major: vectors appended after the modal
                              * derivatives (the adaptation's corrections, rom_adapt.h); not owned */
     int nextra;
@@ -132,6 +135,8 @@ typedef struct gal_rom {
     double next_hyper_check; /* s */
     double hJ;              /* s: the time step of the factorized iteration matrix J (0: none) */
     double *fr;             /* r: scratch */
+    double *fe_prev;        /* r: the loads of the step before (o.loads_once's extrapolation) */
+    double hfe;             /* s: the step that led to fe from fe_prev (0: none since the start) */
 } gal_rom;
 
 void gal_rom_default_opts(gal_rom_opts *o);
@@ -153,8 +158,9 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v);
 int gal_rom_step(gal_rom *m);
 /* The checks' share of the element evaluations: a check (the sample's, gal_rom_hyper_check, or the
  * full residual, gal_rom_residual) evaluates the whole rod and its loads, a step only the samples
- * (twice, Newton's usual passes): on a fine mesh the checks come less often, so that they cost at
- * most this share of the steps and the cost per simulated second does not grow with the mesh. */
+ * (the energy's twice, Newton's usual passes; the loads once, o.loads_once): on a fine mesh the
+ * checks come less often, so that they cost at most this share of the steps and the cost per
+ * simulated second does not grow with the mesh. */
 #define GAL_ROM_CHECK_SHARE 0.2
 /* s: the interval between checks, at least base_s (the caller's) and long enough for
  * GAL_ROM_CHECK_SHARE (base_s on a model that is not hyper-reduced). On the shipped scenes (at
