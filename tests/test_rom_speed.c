@@ -23,7 +23,7 @@ typedef struct {
 
 /* The reduced model of iced_gallop at `elements` over `seconds` of simulated time (hyper_loads: the
  * loads sampled or not); its counters into *c. */
-static int run_opts(int elements, double seconds, int hyper_loads, int loads_once, cost *c)
+static int run_opts(int elements, double seconds, int hyper_loads, int loads_once, int one_pass, cost *c)
 {
     char e[64];
     snprintf(e, sizeof e, "model.elements=%d", elements);
@@ -41,7 +41,7 @@ static int run_opts(int elements, double seconds, int hyper_loads, int loads_onc
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
     ro.h = 0.01, ro.rho_inf = 0.9, ro.damping = d->damping, ro.hyper_loads = hyper_loads;
-    ro.loads_once = loads_once;
+    ro.loads_once = loads_once, ro.one_pass = one_pass;
     gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
     gal_rom *m = st ? NULL : gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
     CHECK(st || m != NULL, "%s", gal_error_message());
@@ -76,7 +76,9 @@ static int run_opts(int elements, double seconds, int hyper_loads, int loads_onc
 
 static int run(int elements, double seconds, int hyper_loads, cost *c)
 {
-    return run_opts(elements, seconds, hyper_loads, 1, c);
+    gal_rom_opts d;
+    gal_rom_default_opts(&d);
+    return run_opts(elements, seconds, hyper_loads, 1, d.one_pass, c);
 }
 
 /* 4x the mesh: the steps evaluate as many elements (the samples' sizes vary by a few elements), and
@@ -122,7 +124,7 @@ static void test_counters_unsampled_loads(void)
 static void test_loads_once_a_step(void)
 {
     cost a, b;
-    if (run_opts(60, 8, 1, 1, &a) || run_opts(60, 8, 1, 0, &b)) return;
+    if (run_opts(60, 8, 1, 1, 0, &a) || run_opts(60, 8, 1, 0, 0, &b)) return;
     CHECK(a.load_evals >= 1 && a.load_evals <= 1.01, "%.3f evaluations of the loads per step", a.load_evals);
     CHECK(a.passes >= 1.9, "%.2f Newton passes per step", a.passes);
     CHECK(b.load_evals >= b.passes - 1e-9 && b.load_evals >= 1.9, "loads_once = 0: %.2f evaluations, %.2f passes",
@@ -131,9 +133,23 @@ static void test_loads_once_a_step(void)
           a.loads_per_step, b.loads_per_step);
 }
 
+/* o.one_pass (the default 8): 7 steps of 8 evaluate the sampled energy once (linearly implicit), the
+ * 8th a Newton of ~2 passes: ~1.15 passes a step, one evaluation of the loads. */
+static void test_one_pass(void)
+{
+    gal_rom_opts d;
+    gal_rom_default_opts(&d);
+    CHECK(d.one_pass == 8 && d.loads_once == 1, "defaults: one_pass %d, loads_once %d", d.one_pass, d.loads_once);
+    cost a;
+    if (run_opts(60, 8, 1, 1, 8, &a)) return;
+    CHECK(a.passes >= 1 && a.passes <= 1.25, "%.2f passes per step", a.passes);
+    CHECK(a.load_evals >= 1 && a.load_evals <= 1.01, "%.3f evaluations of the loads per step", a.load_evals);
+}
+
 int main(void)
 {
     RUN(test_loads_once_a_step);
+    RUN(test_one_pass);
     RUN(test_cost_per_step_flat);
     RUN(test_checks_amortised);
     RUN(test_counters_unsampled_loads);

@@ -49,7 +49,7 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r;
     m->t = t;
-    m->hJ = 0, m->hfe = 0, m->next_hyper_check = t + gal_rom_check_interval(m, m->o.hyper_check_interval);
+    m->hJ = 0, m->hfe = 0, m->lin_ok = 0, m->next_hyper_check = t + gal_rom_check_interval(m, m->o.hyper_check_interval);
     /* x = V^T M (q - q_eq), x' = V^T M v (on the manifold: the closest state on it) */
     if (m->qm) {
         int st = gal_rom_qm_project_state(m, q, v, m->x, m->v);
@@ -160,12 +160,55 @@ static int iteration_matrix(gal_rom *m, double h)
     return GAL_OK;
 }
 
+/* fi1 += Kr (x1 - xs), xs into the start's value: the internal force carried over a correction */
+static void carry_internal(gal_rom *m, double *xs)
+{
+    int r = m->r;
+    for (int k = 0; k < r; k++) xs[k] = m->x1[k] - xs[k];
+    for (int i = 0; i < r; i++) {
+        double s = 0;
+        for (int j = 0; j < r; j++) s += m->Kr[i * r + j] * xs[j];
+        m->fi1[i] += s;
+    }
+}
+
+/* A linearly implicit step (o.one_pass): the internal force at the predictor, the loads
+ * extrapolated; a correction; the loads there (held); a second correction; the internal force
+ * carried over both by the kept tangent Kr, whose matrix J is factored for h (o.one_pass: after a
+ * Newton step that converged within two passes with it). */
+static int linear_step(gal_rom *m, double h)
+{
+    int r = m->r, st;
+    double rs, raw, *xs = m->fdg; /* scratch: rho_inf < 1 has no discrete gradient */
+    newmark(m, h);
+    if ((st = gal_rom_eval_internal(m, m->x1, m->fi1, NULL))) return st;
+    for (int k = 0; k < r; k++) m->fe1[k] = m->hfe == h ? 2 * m->fe[k] - m->fe_prev[k] : m->fe[k];
+    for (int pass = 0; pass < 2; pass++) {
+        if (!isfinite(residual(m, &rs, &raw))) return gal_error(GAL_EFAIL, "reduced model: the residual is not finite");
+        for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
+        lu_solve(m->J, r, m->piv, m->da);
+        memcpy(xs, m->x1, (size_t)r * sizeof(double));
+        for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
+        newmark(m, h);
+        carry_internal(m, xs);
+        if (!pass && (st = gal_rom_eval_external(m, m->t + h, m->x1, m->v1, m->fe1))) return st;
+    }
+    return GAL_OK;
+}
+
+/* o.one_pass applies: the loads once a step, rho_inf < 1, a linear basis */
+static int linear_steps(const gal_rom *m)
+{
+    return m->o.one_pass > 0 && m->o.loads_once && m->force.eval && m->o.rho_inf < 1 && !m->qm;
+}
+
 /* Newton on a1 for one step of h from the state; x1, v1, a1, fi1, fe1 hold the result. */
 static int newton(gal_rom *m, double h)
 {
     int r = m->r, st = GAL_OK;
     double t1 = m->t + h;
     memcpy(m->a1, m->a, (size_t)r * sizeof(double));
+    if (linear_steps(m) && m->hJ == h && m->lin_ok && m->steps % m->o.one_pass) return linear_step(m, h);
     if (m->qm && m->qm->inertia) gal_rom_qm_begin(m);
     /* modified Newton: the iteration matrix of an earlier step is kept (o.reuse_tangent) while it
      * converges fast; a fresh tangent whenever an iteration did not gain a factor of 10 (the
@@ -201,6 +244,7 @@ static int newton(gal_rom *m, double h)
         for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
         m->newton_iterations++;
     }
+    m->lin_ok = conv && it <= 1; /* within two passes: the kept tangent is good enough for o.one_pass */
     if (!st && !conv)
         st = gal_error(GAL_EFAIL, "reduced model: Newton did not converge in %d iterations at t = %.6g s "
                        "(time step %g s)", m->o.max_newton, t1, h);
@@ -237,8 +281,10 @@ double gal_rom_check_interval(const gal_rom *m, double base_s)
     const gal_rom_hyper *h = m->hyper;
     if (!h || !(base_s > 0)) return base_s;
     int nel = m->rod->p.elements, loads = m->force.eval != NULL;
-    /* a step: Newton's usual two passes of the energy, and the loads once (o.loads_once) or twice */
-    double sample = 2.0 * h->set[0].n + (loads ? (h->loads ? h->set[1].n : nel) * (m->o.loads_once ? 1.0 : 2.0) : 0);
+    /* a step: Newton's usual two passes of the energy (one on o.one_pass's linear steps), and the
+     * loads once (o.loads_once) or twice */
+    double pe = linear_steps(m) ? 1.0 + 1.0 / m->o.one_pass : 2.0;
+    double sample = pe * h->set[0].n + (loads ? (h->loads ? h->set[1].n : nel) * (m->o.loads_once ? 1.0 : 2.0) : 0);
     double check = 2.0 * (gal_rod_element_count(m->rod) + (loads ? nel : 0)); /* the sample's and the residual's */
     double per_s = sample / m->o.h; /* the steps' element evaluations per simulated second */
     return fmax(base_s, check / (GAL_ROM_CHECK_SHARE * per_s));

@@ -72,6 +72,11 @@ typedef struct gal_rom_opts {
     int loads_once;         /* 1: the loads evaluated once a step (default), after Newton's first
                              * correction, and held over the later ones (the first pass takes them
                              * extrapolated from the last two steps); 0: at every Newton pass */
+    int one_pass;           /* N > 0 (with loads_once and rho_inf < 1): of each N steps all but one
+                             * take one evaluation of the internal force (at the predictor) and
+                             * carry it over the corrections with the kept tangent (linearly
+                             * implicit), the N-th a full Newton (which refreshes the tangent when
+                             * it contracts slowly; default 8); 0: Newton every step */
     const double *extra;    /* ndof x nextra, column-major: vectors appended after the modal
                              * derivatives (the adaptation's corrections, rom_adapt.h); not owned */
     int nextra;
@@ -122,6 +127,7 @@ typedef struct gal_rom {
     gal_csc *K;
     /* counters */
     long steps, newton_iterations, tangents, force_evaluations;
+    int lin_ok;             /* the last Newton step converged within two passes (o.one_pass) */
     long halvings;          /* steps retried as two halves after Newton failed */
     long element_evaluations;      /* energy elements of the rod evaluated by the steps (from the
                              * sample; an evaluation of the whole rod counts all of them) */
