@@ -4,7 +4,10 @@
  * and split into the families of the motion (vertical: in the plane of the span, normal to the
  * conductor at equilibrium; horizontal: out of that plane; axial: along it; torsional: the twist),
  * each in the mass norm |u|^2 = sum m_d u_d^2 and set against the family's own displacement (so
- * that the axial forces, large and balanced, do not swamp the transverse ones). */
+ * that the axial forces, large and balanced, do not swamp the transverse ones). Also the power
+ * along the full velocity, per family, of R, of the load and of the damping force (diagnostics:
+ * the reduced equations are the full ones projected on the basis, so R does no work along the
+ * reconstructed velocity but for the hyper-reduction's error; BENCHMARKS.md). */
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
 
@@ -17,8 +20,9 @@
 
 enum { TERM_R, TERM_MA, TERM_CV, TERM_G, TERM_F, NTERM };
 
-/* Accumulate sum m y^2 per family of the free-dof displacement y into acc[family]. */
-static void accumulate(const gal_rom *m, const double *y, const double *mdiag, double *acc)
+/* Accumulate sum w y z per family of the free-dof vectors y, z into acc[family] (w: the diagonal
+ * weights, 1 when NULL). */
+static void accumulate(const gal_rom *m, const double *y, const double *z, const double *mdiag, double *acc)
 {
     const gal_rod *rod = m->rod;
     int nn = rod->nn;
@@ -37,15 +41,16 @@ static void accumulate(const gal_rom *m, const double *y, const double *mdiag, d
         for (int k = 0; k < 3; k++) ey[k] /= ly;
         gal_cross3(t, ey, nv);
         double yv = gal_dot3(nv, y + d0), yh = gal_dot3(ey, y + d0), ya = gal_dot3(t, y + d0);
-        double w = mdiag[d0];
-        acc[GAL_FAMILY_VERTICAL] += yv * yv * w;
-        acc[GAL_FAMILY_HORIZONTAL] += yh * yh * w;
-        acc[GAL_FAMILY_AXIAL] += ya * ya * w;
+        double zv = gal_dot3(nv, z + d0), zh = gal_dot3(ey, z + d0), za = gal_dot3(t, z + d0);
+        double w = mdiag ? mdiag[d0] : 1;
+        acc[GAL_FAMILY_VERTICAL] += yv * zv * w;
+        acc[GAL_FAMILY_HORIZONTAL] += yh * zh * w;
+        acc[GAL_FAMILY_AXIAL] += ya * za * w;
     }
     if (rod->p.torsion)
         for (int j = 0; j < rod->p.elements; j++) {
             int d = rod->dof[3 * nn + j];
-            if (d >= 0) acc[GAL_FAMILY_TORSIONAL] += y[d] * y[d] * mdiag[d];
+            if (d >= 0) acc[GAL_FAMILY_TORSIONAL] += y[d] * z[d] * (mdiag ? mdiag[d] : 1);
         }
 }
 
@@ -74,13 +79,16 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     gal_rod_gather(rod, m->gq, y[TERM_G]);
     gal_rod_gather(rod, m->fq, y[TERM_F]);
     for (int d = 0; d < n; d++) y[TERM_R][d] = y[TERM_MA][d] + y[TERM_CV][d] + y[TERM_G][d] - y[TERM_F][d];
+    accumulate(m, y[TERM_R], vf, NULL, chk->power[0]);
+    accumulate(m, y[TERM_F], vf, NULL, chk->power[1]);
+    accumulate(m, y[TERM_CV], vf, NULL, chk->power[2]);
     /* du = K0^-1 R and the displacement u = V x */
     if ((st = gal_chol_solve(m->chol0, y[TERM_R], y[TERM_R]))) goto done;
     if (du) memcpy(du, y[TERM_R], (size_t)n * sizeof(double));
     memcpy(y[TERM_MA], u, (size_t)n * sizeof(double));
     double acc[2][GAL_FAMILY_COUNT] = {{0}}, total = 0;
-    accumulate(m, y[TERM_R], rod->mdiag, acc[0]);
-    accumulate(m, y[TERM_MA], rod->mdiag, acc[1]);
+    accumulate(m, y[TERM_R], y[TERM_R], rod->mdiag, acc[0]);
+    accumulate(m, y[TERM_MA], y[TERM_MA], rod->mdiag, acc[1]);
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) total += acc[1][f];
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) {
         double scale = fmax(sqrt(acc[1][f]), 0.02 * sqrt(total));

@@ -107,8 +107,8 @@ static int self_check(rom_state *s)
     if (s->warn) return GAL_OK;
     return gal_error(GAL_EFAIL, "%s: the reduced model's residual grew to %.3g in the %s family at t = %.4g s, past "
                      "model.residual_tolerance = %.3g (amplitudes no longer within ~5%%), and it cannot adapt: %s; "
-                     "select more modes (model.%s), raise model.residual_tolerance, or set model.on_invalid = warn "
-                     "to finish the run marked invalid", s->m->sc.path, chk.rel[f], gal_family_names[f], s->rom->t,
+                     "select more modes (model.%s), run the full model (--model full), raise "
+                     "model.residual_tolerance, or set model.on_invalid = warn to finish the run marked invalid", s->m->sc.path, chk.rel[f], gal_family_names[f], s->rom->t,
                      s->tol, why, family_keys[f]);
 }
 

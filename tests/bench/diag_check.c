@@ -3,9 +3,10 @@
  * CACHE) and the reduced model on its initial basis (no adaptation), its checks every second
  * written raw (per family: |du| and |u| in the mass norm), and its true amplitude errors against
  * the full model on the same steady window. Usage:
- *   diag_check CACHE SCENE ELEMENTS MV MH MT HYPER [DURATION]
- * Prints CASE| (errors), CHK| (t, err[4], disp[4], max) and PRB| (t, du and u at mid-span: vertical,
- * horizontal, twist) lines. */
+ *   diag_check CACHE SCENE ELEMENTS MV MH MT HYPER [DURATION [TOLERANCE]]
+ * Prints CASE| (errors), CHK| (t, err[4], disp[4], max), REL| (t, the adaptation's norm per family,
+ * its max) and PRB| (t, du and u at mid-span: vertical, horizontal, twist) lines. With TOLERANCE > 0
+ * the basis grows past it as in a run (GROW| lines), from the initial basis otherwise. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -84,7 +85,7 @@ int main(int argc, char **argv)
     gal_rom *m;
     int st = gal_rom_adapt_init(&a, &m, rod, d->eq.q, &d->md, sel, r, &ro, &F);
     if (!st) st = gal_rom_start(m, 0.0, d->q_start, d->v_start);
-    double next = 0;
+    double next = 0, tol = argc > 9 ? atof(argv[9]) : 0;
     gal_rom_check chk;
     double *du = malloc(3 * (size_t)rod->ndof * sizeof(double)), *vf = du + rod->ndof, *af = vf + rod->ndof;
     double *u = malloc((size_t)rod->ndof * sizeof(double));
@@ -93,13 +94,23 @@ int main(int argc, char **argv)
         if (st) break;
         gal_rom_observe(m, res.nprobe, res.probe, res.trace + i * 4 * res.nprobe, res.tension + 2 * i);
         if (m->t >= next - 1e-9) {
-            if ((st = gal_rom_residual_dir(m, &chk, du))) break;
+            if ((st = gal_rom_adapt_residual(&a, m, &chk, du))) break;
             gal_rom_full_rates(m, vf, af, u);
             int mid = rod->nn / 2, dm = rod->dof[3 * mid], dt = rod->dof[3 * rod->nn + rod->p.elements / 2];
             printf("PRB|%.3f|%.4g|%.4g|%.4g|%.4g|%.4g|%.4g\n", m->t, du[dm + 2], du[dm + 1], dt >= 0 ? du[dt] : 0,
                    u[dm + 2], u[dm + 1], dt >= 0 ? u[dt] : 0);
             printf("CHK|%.3f|%.4g|%.4g|%.4g|%.4g|%.4g|%.4g|%.4g|%.4g|%.4g\n", m->t, chk.err[0], chk.err[1], chk.err[2],
                    chk.err[3], chk.disp[0], chk.disp[1], chk.disp[2], chk.disp[3], chk.max);
+            printf("REL|%.3f|%.4g|%.4g|%.4g|%.4g|%.4g\n", m->t, chk.rel[0], chk.rel[1], chk.rel[2], chk.rel[3], chk.max);
+            for (int k = 0; k < 3; k++)
+                printf("POW%d|%.3f|%.4g|%.4g|%.4g|%.4g\n", k, m->t, chk.power[k][0], chk.power[k][1], chk.power[k][2],
+                       chk.power[k][3]);
+            if (tol > 0 && chk.max > tol) {
+                int g = gal_rom_adapt_grow(&a, &m, &chk, du);
+                if (g == GAL_OK) printf("GROW|%.3f|%d|%d\n", m->t, a.ev[a.nevents - 1].family, m->r);
+                else if (g != GAL_ROM_ELIMIT) st = g;
+                else printf("LIMIT|%.3f|%s\n", m->t, gal_error_message());
+            }
             next += 1;
         }
     }

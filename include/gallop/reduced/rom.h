@@ -93,6 +93,8 @@ typedef struct gal_rom_check {
     double err[GAL_FAMILY_COUNT];   /* the mass norms of du per family */
     double disp[GAL_FAMILY_COUNT];  /* ... and of the displacement from the equilibrium */
     double scale[GAL_FAMILY_COUNT]; /* ... and the scale rel is relative to */
+    double power[3][GAL_FAMILY_COUNT]; /* W: the power along the full velocity, per family, of the
+                                        * residual R, the load F and the damping force C v */
 } gal_rom_check;
 
 typedef struct gal_rom {
