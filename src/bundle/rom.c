@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "base/chol.h"
+#include "base/dense.h"
 #include "gallop/full/dynamics.h"
 
 void gal_bundle_rom_default_opts(gal_bundle_rom_opts *o)
@@ -112,42 +113,6 @@ void gal_bundle_rom_project_matrix(gal_bundle_rom *m, const gal_csc *A, double *
     }
 }
 
-/* LU with partial pivoting of the r x r row-major A in place; 0 on success. */
-static int lu_factor(double *A, int r, int *piv)
-{
-    for (int k = 0; k < r; k++) {
-        int p = k;
-        for (int i = k + 1; i < r; i++)
-            if (fabs(A[i * r + k]) > fabs(A[p * r + k])) p = i;
-        piv[k] = p;
-        if (!(fabs(A[p * r + k]) > 0)) return 1;
-        if (p != k)
-            for (int j = 0; j < r; j++) {
-                double t = A[k * r + j]; A[k * r + j] = A[p * r + j]; A[p * r + j] = t;
-            }
-        for (int i = k + 1; i < r; i++) {
-            double l = A[i * r + k] /= A[k * r + k];
-            for (int j = k + 1; j < r; j++) A[i * r + j] -= l * A[k * r + j];
-        }
-    }
-    return 0;
-}
-
-/* x = A^-1 x with lu_factor's A: the row swaps first (lu_factor swapped whole rows, its multipliers
- * with them), then the two triangular solves. */
-static void lu_solve(const double *A, int r, const int *piv, double *x)
-{
-    for (int k = 0; k < r; k++) {
-        double t = x[piv[k]]; x[piv[k]] = x[k]; x[k] = t;
-    }
-    for (int k = 0; k < r; k++)
-        for (int i = k + 1; i < r; i++) x[i] -= A[i * r + k] * x[k];
-    for (int k = r - 1; k >= 0; k--) {
-        for (int j = k + 1; j < r; j++) x[k] -= A[k * r + j] * x[j];
-        x[k] /= A[k * r + k];
-    }
-}
-
 /* The state at x, its gradient (b->grad; the tangent in b->K when asked) and the reduced internal
  * and external forces at time t and rate xd; the round-off of the projected gradient in m->floor1. */
 int gal_bundle_rom_forces(gal_bundle_rom *m, const double *x, const double *xd, double t, int tangent, double *s,
@@ -200,12 +165,12 @@ int gal_bundle_rom_acceleration(gal_bundle_rom *m, const double *s, const double
         mass_mult(m, s, m->dx, m->res);
         for (int k = 0; k < r; k++) m->tmpr[k * r + c] = m->res[k];
     }
-    if (lu_factor(m->tmpr, r, m->piv2)) return gal_error(GAL_EFAIL, "bundle reduced model: singular reduced mass");
+    if (gal_dense_lu_factor(m->tmpr, r, m->piv2)) return gal_error(GAL_EFAIL, "bundle reduced model: singular reduced mass");
     for (int k = 0; k < r; k++) {
         a[k] = fe[k] - fi[k];
         for (int j = 0; j < r; j++) a[k] -= m->Cr[k * r + j] * v[j];
     }
-    lu_solve(m->tmpr, r, m->piv2, a);
+    gal_dense_lu_solve(m->tmpr, r, m->piv2, a);
     return GAL_OK;
 }
 
@@ -290,7 +255,7 @@ static int refactor(gal_bundle_rom *m, double h, double t1)
     for (int k = 0; k < r; k++) m->J[k * r + k] += cm;
     m->tangents++;
     m->hJ = 0;
-    if (lu_factor(m->J, r, m->piv))
+    if (gal_dense_lu_factor(m->J, r, m->piv))
         return gal_error(GAL_EFAIL, "bundle reduced model: singular iteration matrix at t = %.6g s", t1);
     m->hJ = h;
     return GAL_OK;
@@ -330,7 +295,7 @@ static int try_step(gal_bundle_rom *m, double h)
         if (fresh && (st = refactor(m, h, t1))) return st;
         rprev = rn;
         memcpy(m->wr, m->res, (size_t)r * sizeof(double));
-        lu_solve(m->J, r, m->piv, m->wr);
+        gal_dense_lu_solve(m->J, r, m->piv, m->wr);
         for (int k = 0; k < r; k++) m->dx[k] -= m->wr[k];
     }
     return gal_error(GAL_EFAIL, "bundle reduced model: Newton did not converge in %d iterations at t = %.6g s",

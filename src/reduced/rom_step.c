@@ -7,42 +7,12 @@
 #include "gallop/base/core.h"
 #include "gallop/reduced/ecsw.h"
 #include "reduced/hyper.h"
+#include "base/dense.h"
 #include "reduced/qm.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* LU with partial pivoting of the r x r row-major A in place; 0 on success. */
-static int lu_factor(double *A, int r, int *piv)
-{
-    for (int k = 0; k < r; k++) {
-        int p = k;
-        for (int i = k + 1; i < r; i++)
-            if (fabs(A[i * r + k]) > fabs(A[p * r + k])) p = i;
-        piv[k] = p;
-        if (A[p * r + k] == 0) return -1;
-        if (p != k)
-            for (int j = 0; j < r; j++) { double t = A[k * r + j]; A[k * r + j] = A[p * r + j]; A[p * r + j] = t; }
-        for (int i = k + 1; i < r; i++) {
-            double l = A[i * r + k] /= A[k * r + k];
-            for (int j = k + 1; j < r; j++) A[i * r + j] -= l * A[k * r + j];
-        }
-    }
-    return 0;
-}
-
-static void lu_solve(const double *A, int r, const int *piv, double *b)
-{
-    for (int k = 0; k < r; k++) {
-        double t = b[piv[k]]; b[piv[k]] = b[k]; b[k] = t;
-        for (int i = k + 1; i < r; i++) b[i] -= A[i * r + k] * b[k];
-    }
-    for (int k = r - 1; k >= 0; k--) {
-        for (int j = k + 1; j < r; j++) b[k] -= A[k * r + j] * b[j];
-        b[k] /= A[k * r + k];
-    }
-}
 
 int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
 {
@@ -155,7 +125,7 @@ static int iteration_matrix(gal_rom *m, double h)
         gal_rom_qm_iteration(m, m->x1, m->v1, cm, cc, m->J);
     }
     m->hJ = 0;
-    if (lu_factor(m->J, r, m->piv)) return gal_error(GAL_EFAIL, "reduced model: singular iteration matrix");
+    if (gal_dense_lu_factor(m->J, r, m->piv)) return gal_error(GAL_EFAIL, "reduced model: singular iteration matrix");
     m->hJ = h;
     return GAL_OK;
 }
@@ -186,7 +156,7 @@ static int linear_step(gal_rom *m, double h)
     for (int pass = 0; pass < 2; pass++) {
         if (!isfinite(residual(m, &rs, &raw))) return gal_error(GAL_EFAIL, "reduced model: the residual is not finite");
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
-        lu_solve(m->J, r, m->piv, m->da);
+        gal_dense_lu_solve(m->J, r, m->piv, m->da);
         memcpy(xs, m->x1, (size_t)r * sizeof(double));
         for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
         newmark(m, h);
@@ -240,7 +210,7 @@ static int newton(gal_rom *m, double h)
             fresh = 0;
         }
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
-        lu_solve(m->J, r, m->piv, m->da);
+        gal_dense_lu_solve(m->J, r, m->piv, m->da);
         for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
         m->newton_iterations++;
     }
