@@ -9,22 +9,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The generalized loads of element j (gal_loads_full's distribution): g[0..2] on node j,
- * g[3..5] on node j+1, g[6] on the element's twist. */
+/* The generalized loads of element j (gal_loads_full's distribution, its element function: an
+ * equivalent bundle's summed over its sub-conductors): g[0..2] on node j, g[3..5] on node j+1,
+ * g[6] on the element's twist. */
 int gal_onset_elem_load(const gal_loads *L, const gal_rod *rod, const double *q, const double *v, int j, double g[7])
 {
-    double r[3], rd[3], tg[3], d1[3], fe[3] = {0, 0, 0}, me = 0;
-    for (int k = 0; k < 3; k++) {
-        r[k] = 0.5 * (q[3 * j + k] + q[3 * (j + 1) + k]);
-        rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
-    }
-    gal_rod_material_frame(rod, q, j, tg, d1);
-    int st = gal_loads_point((void *)L, 0.0, r[0], r, rd, tg, d1, fe, &me);
-    if (st) return st;
-    double l0 = rod->l0[j];
-    for (int k = 0; k < 3; k++) g[k] = g[3 + k] = 0.5 * l0 * fe[k];
-    g[6] = rod->p.torsion ? l0 * me : 0;
-    return GAL_OK;
+    gal_loads Lr = *L;
+    Lr.rod = rod;
+    return gal_loads_element(&Lr, 0.0, q, v, j, g);
 }
 
 /* Central difference of element j's loads with respect to entry x[idx] (step h): column col of J. */
@@ -91,8 +83,10 @@ int gal_onset_aero_matrices(const gal_rod *rod, const double *q0, const gal_load
             if (!st) project_add(n, P, J, nc, cmap, Ka, T);
         }
         if (Ca && L->aero_damping && !st) {
-            for (int c = 0; c < 6 && !st; c++) st = gal_onset_elem_column(L, rod, q, v, j, v, qi[c], hv, J + 7 * c);
-            if (!st) project_add(n, P, J, 6, cmap, Ca, T);
+            /* an equivalent bundle's loads depend on the twist rate too (its sub-conductors move) */
+            int ncv = L->bundle.n > 1 ? nc : 6;
+            for (int c = 0; c < ncv && !st; c++) st = gal_onset_elem_column(L, rod, q, v, j, v, qi[c], hv, J + 7 * c);
+            if (!st) project_add(n, P, J, ncv, cmap, Ca, T);
         }
     }
     free(q); free(v); free(P); free(T);

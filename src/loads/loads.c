@@ -1,8 +1,10 @@
 /* loads.c: quasi-steady aerodynamic loads in a ramped, turbulent, possibly reversing wind: the
  * lists of the terms that are on (loads.h), the point load as their sum (the relative wind, then
- * the section load), the full model's generalized forces and the statics under the mean wind. */
+ * the section load, or an equivalent bundle's: bundle_section.c), the full model's generalized
+ * forces and the statics under the mean wind. */
 #include "gallop/loads/loads.h"
 #include "gallop/base/core.h"
+#include "loads_impl.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -36,27 +38,29 @@ static void wind_at(const gal_loads *L, const gal_loads_list *ls, double t, doub
 }
 
 /* The point load: the relative wind (the wind, then aerodynamic damping), the section's turned
- * reference direction, the section terms. */
-static int point(const gal_loads *L, const gal_loads_list *ls, double t, double x,
-                 const double rdot[3], const double tan[3], const double d1[3], double f[3], double *m)
+ * reference direction, the section terms; an equivalent bundle's summed over its sub-conductors,
+ * each moving with the twist rate spin (rad/s). */
+static int point(const gal_loads *L, const gal_loads_list *ls, double t, double x, const double rdot[3],
+                 double spin, const double tan[3], const double d1[3], double f[3], double *m)
 {
-    double w[3];
+    double w[3], d[3];
+    const double *da = d1;
     wind_at(L, ls, t, x, w);
-    for (int k = 0; k < ls->nwind; k++)
-        if (ls->wind[k]->relative) ls->wind[k]->relative(L, rdot, w);
     if (L->attack_angle != 0) {
         /* the section's reference direction turned by -attack_angle about the tangent: the
          * angle of attack, measured from it, grows by attack_angle */
-        double c = cos(L->attack_angle), s = sin(L->attack_angle), b[3], d[3];
+        double c = cos(L->attack_angle), s = sin(L->attack_angle), b[3];
         b[0] = tan[1] * d1[2] - tan[2] * d1[1];
         b[1] = tan[2] * d1[0] - tan[0] * d1[2];
         b[2] = tan[0] * d1[1] - tan[1] * d1[0];
         for (int k = 0; k < 3; k++) d[k] = c * d1[k] - s * b[k];
-        return gal_aero_load_terms(L->table, tan, d, w, L->rho, L->diam, ls->section, ls->nsection,
-                                   f, m, NULL, NULL);
+        da = d;
     }
-    return gal_aero_load_terms(L->table, tan, d1, w, L->rho, L->diam, ls->section, ls->nsection, f,
-                               m, NULL, NULL);
+    if (L->bundle.n > 1) return gal_loads_bundle_section(L, ls, w, rdot, spin, tan, d1, da, f, m);
+    for (int k = 0; k < ls->nwind; k++)
+        if (ls->wind[k]->relative) ls->wind[k]->relative(L, rdot, w);
+    return gal_aero_load_terms(L->table, tan, da, w, L->rho, L->diam, ls->section, ls->nsection, f, m,
+                               NULL, NULL);
 }
 
 void gal_loads_wind(const gal_loads *L, double t, double x, double w[3])
@@ -73,7 +77,7 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
     gal_loads_list ls;
     (void)r;
     gal_loads_list_make(L, &ls);
-    return point(L, &ls, t, x, rdot, tan, d1, f, m);
+    return point(L, &ls, t, x, rdot, 0.0, tan, d1, f, m);
 }
 
 /* The load of element j at its centre: force fe (N/m) and moment *me (N m/m). */
@@ -87,7 +91,8 @@ static int element_load(const gal_loads *L, const gal_loads_list *ls, double t, 
         rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
     }
     gal_rod_material_frame(L->rod, q, j, tg, d1);
-    int st = point(L, ls, t, r[0], rd, tg, d1, fe, me);
+    double spin = L->rod->p.torsion ? v[3 * L->rod->nn + j] : 0.0; /* the twist rate */
+    int st = point(L, ls, t, r[0], rd, spin, tg, d1, fe, me);
     if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
     return GAL_OK;
 }

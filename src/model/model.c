@@ -96,8 +96,8 @@ static void loads_config(const gal_scene *sc, gal_loads *L)
     L->flags = (sc->effect[GAL_FX_AERO_DRAG] ? GAL_AERO_DRAG : 0u) | (sc->effect[GAL_FX_AERO_LIFT] ? GAL_AERO_LIFT : 0u) |
                (sc->effect[GAL_FX_AERO_MOMENT] && sc->effect[GAL_FX_TORSION] ? GAL_AERO_MOMENT : 0u);
     L->aero_damping = sc->effect[GAL_FX_AERO_DAMPING];
-    /* the n sub-conductors of a bundle see the same flow (no wake shielding): n times the section's
-     * loads, carried as n times the air density */
+    /* the n sub-conductors of a bundle: n times the air density for the single-rod onset criteria
+     * (Den Hartog, Nigol); the loads sum the sub-conductors' (gal_loads_bundle_set below) */
     L->rho = sc->wind.air_density * sc->bundle.subconductors;
     L->diam = sc->conductor.diameter;
     L->attack_angle = sc->ice.present ? sc->ice.attack_angle : 0.0;
@@ -105,6 +105,10 @@ static void loads_config(const gal_scene *sc, gal_loads *L)
     L->dir[0] = cos(sc->wind.yaw), L->dir[1] = sin(sc->wind.yaw), L->dir[2] = 0;
     L->ramp_time = sc->simulation.wind_ramp;
     L->reverse_time = sc->simulation.wind_reverse_time;
+    /* the equivalent bundle's section load: its sub-conductors' summed (src/loads/bundle_section.c) */
+    if (sc->bundle.subconductors > 1 && !sc->bundle.explicit_model)
+        gal_loads_bundle_set(L, sc->bundle.subconductors, sc->bundle.radius, sc->bundle.orientation,
+                             sc->wind.air_density, sc->bundle.wake_factor);
 }
 
 /* The loads, their table and the turbulent field's parameters. */

@@ -9,7 +9,8 @@
  *                       turbulence    src/loads/turbulence.c  a field u (nt > 1, nx > 0)
  *                       vertical_turbulence  turbulence.c     a field w on the same grid
  *                       aero_damping  src/loads/relwind.c     aero_damping (minus the velocity)
- *   the section load    aero_drag, aero_lift, aero_moment  src/loads/section.c  by flags */
+ *   the section load    aero_drag, aero_lift, aero_moment  src/loads/section.c  by flags
+ * An equivalent bundle sums the section load over its sub-conductors (src/loads/bundle_section.c). */
 #ifndef GALLOP_LOADS_H
 #define GALLOP_LOADS_H
 
@@ -37,6 +38,19 @@ typedef struct gal_loads_term {
 extern const gal_loads_term gal_loads_term_mean_wind, gal_loads_term_turbulence,
     gal_loads_term_vertical_turbulence, gal_loads_term_aero_damping;
 
+/* An equivalent bundle carried as one rod (src/loads/bundle_section.c): at each section the loads
+ * of its n sub-conductors, each at its offset from the centroid (turned with the section's twist),
+ * at its own relative wind (the centroid's velocity plus the twist rate times tan x offset), its
+ * own air density (the wake factor on a leeward one), summed about the centroid. */
+#define GAL_LOADS_MAX_SUB 8
+typedef struct gal_loads_bundle {
+    int n;                              /* sub-conductors; 0: a single conductor (the section's load) */
+    double off[GAL_LOADS_MAX_SUB][2];   /* m: offsets along the section's d1 and d2 = tan x d1 (at
+                                         * rest: horizontal across the span and up) */
+    double rho[GAL_LOADS_MAX_SUB];      /* kg/m^3: each one's air density */
+    int leeward[GAL_LOADS_MAX_SUB];     /* 1: in another's wake at rest (its rho times wake_factor) */
+} gal_loads_bundle;
+
 typedef struct gal_loads {
     const gal_aero_table *table;
     unsigned flags;          /* GAL_AERO_DRAG | GAL_AERO_LIFT | GAL_AERO_MOMENT */
@@ -55,7 +69,17 @@ typedef struct gal_loads {
     const double *w;         /* m/s, the vertical fluctuation on the same grid, or NULL: none */
     /* the rod, for the full model's callback */
     const gal_rod *rod;
+    gal_loads_bundle bundle; /* n > 1: an equivalent bundle's sub-conductors (gal_loads_bundle_set) */
 } gal_loads;
+
+/* Make L an equivalent bundle's: n (2..GAL_LOADS_MAX_SUB) sub-conductors on the circle of `radius`
+ * (m), the first at `orientation` (rad from the horizontal, the explicit model's placing), each at
+ * air_density (kg/m^3) times wake_factor (0..1) when leeward: downwind of another (along L->dir's
+ * component across the span) and within one diameter L->diam of its line, at rest (set L->dir and
+ * L->diam first). L->rho stays as it is (n times the air density: what the single-rod onset
+ * criteria read). n < 2 clears it. */
+void gal_loads_bundle_set(gal_loads *L, int n, double radius, double orientation, double air_density,
+                          double wake_factor);
 
 /* The terms that are on, in order. Made from the fields of a gal_loads at each evaluation (a few
  * tests; gal_loads_full makes it once for all elements): gal_loads is a value that callers copy
@@ -77,7 +101,9 @@ void gal_loads_wind(const gal_loads *L, double t, double x, double w[3]);
 int gal_loads_point(void *ctx, double t, double x, const double r[3], const double rdot[3],
                     const double tan[3], const double d1[3], double f[3], double *m);
 /* The full model's generalized forces (gal_force.eval signature): element-centre loads times the
- * unstretched element length, half to each node, moments to the twist. */
+ * unstretched element length, half to each node, moments to the twist. An equivalent bundle's
+ * (L->bundle.n > 1) are its sub-conductors' summed about the centroid, each moving with the
+ * element's twist rate v[3 nn + j] (gal_loads_point has no twist rate: it takes it as 0). */
 int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f);
 
 /* The share of element j alone (gal_force.element signature): f[0..2] and f[3..5] on its two
