@@ -28,6 +28,7 @@ void gal_bundle_rom_default_opts(gal_bundle_rom_opts *o)
     o->fd_step_m = 1e-3;
     o->deflation_tol = 1e-6;
     o->load_vectors = 2;
+    o->inertia_vectors = 1;
 }
 
 gal_bundle_rom *gal_bundle_rom_free(gal_bundle_rom *m)

@@ -5,6 +5,7 @@
  * differences along phi_j, i <= j), and with a wind the static responses to its mean load and to
  * that load's derivatives along each mode (load-dependent Ritz vectors: the sub-conductors' own twist
  * between spacers under their aerodynamic moments, which no low bundle mode carries),
+ * then each of those static vectors' inertia K0^-1 M0 u (its next Krylov vector),
  * M0-orthonormalized and deflated (V^T M0 V = I). The state is
  * the equilibrium stepped by z = V x (gal_bundle_step from b->state: rods' dofs added, spacers
  * rotated by exp(z_phi x)); every term is the full model's at that state, projected:
@@ -46,6 +47,8 @@ typedef struct gal_bundle_rom_opts {
                              * carries apart): 1 the static response to the mean load K0^-1 F;
                              * 2 (default) also K0^-1 of the load's derivatives along each selected
                              * mode's displacement and velocity; 0 none */
+    int inertia_vectors;    /* 1 (default): K0^-1 M0 u appended for every vector u past the modes
+                             * (the static vectors' inertia, the next Krylov vector); 0 none */
 } gal_bundle_rom_opts;
 
 /* The self-check's figures (per gal_family, as gal_rom_check). */
