@@ -94,14 +94,15 @@ static void against_full(const char *path, const char *const *ov, double tol, do
 
 static void test_quad_against_full(void)
 {
-    /* measured: 0.015% and 0.003% of the ranges, 0.0004 deg, tensions 0.19% of theirs */
+    /* measured: 0.001% and 0.001% of the ranges, 0.0001 deg, tensions 0.03% of theirs (with the
+     * inertia vectors; 0.015%, 0.003%, 0.0004 deg, 0.19% without) */
     against_full("data/scenes/quad_bundle_gallop.ini", quad, 0.01, 0.005, 0.01);
 }
 
 static void test_twin_against_full(void)
 {
-    /* measured: 1.2% and 0.02% of the ranges, 0.067 deg, tensions 16% of theirs at worst (the
-     * twin's start: the residual is past 1 before t = 0.5 s, 0.03 at the checks); over 300 s the
+    /* measured: 0.03% and 0.004% of the ranges, 0.003 deg, tensions 0.6% of theirs at worst (with
+     * the inertia vectors; without: 1.2%, 0.02%, 0.067 deg, 16%, the twin's start); over 300 s the
      * twin's galloping is NOT reproduced (README "Bundles") */
     against_full("tests/bundle/drake_twin.ini", twin, 0.02, 0.1, 0.25);
 }
