@@ -10,7 +10,9 @@
  *   reduced      the reduced model's basis modes: the selected ones, none at or near 0 Hz (the
  *                reduced integrator, run/integrator.h, builds its basis on them: reduced/rom.h)
  * Every command calls it: `gallop modes` to the modes, `stability` to the modes, `accuracy` and the
- * runs (`simulate`, `compare`, run/sim.h) as far as their integrator needs. */
+ * runs (`simulate`, `compare`, run/sim.h) as far as their integrator needs. Another model's data of
+ * the same span may lend its equilibrium and modes (gal_data_share, forward_share.c: a sweep over
+ * the wind sets its span up once). */
 #ifndef GALLOP_FORWARD_H
 #define GALLOP_FORWARD_H
 

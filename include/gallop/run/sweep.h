@@ -119,7 +119,7 @@ typedef struct gal_sweep_onset_cache {
  * them, taken by a later case whose stage key (gal_stage_key at the modes) is the same: a sweep
  * over the wind, or over any key the equilibrium and the modes do not read, finds them once per
  * span (while no more than GAL_SWEEP_SETUP_CACHE spans alternate). */
-#define GAL_SWEEP_SETUP_CACHE 4
+#define GAL_SWEEP_SETUP_CACHE 16
 struct gal_model;
 struct gal_data;
 typedef struct gal_sweep_setup_cache {
