@@ -30,6 +30,7 @@ typedef struct {
     gal_sweep_grid g;
     gal_par *par;
     gal_sweep_onset_cache cache;
+    gal_sweep_setup_cache setup;   /* the spans' equilibria and modes, kept between cases */
     gal_scene sc;                  /* the case being loaded (one unit at a time per process) */
     int nomem;
 } sweep;
@@ -100,14 +101,15 @@ static void run_unit(void *ctx, long h)
             failed_case(&r, st);
         } else if (!gal_sweep_record_read(S->outdir, fp, &r, g->continuation ? &q1 : NULL, &v1, &nq1)) {
             computed = 1;
-            if (gal_sweep_case_run(&S->sc, S->kind, q, v, nq, &S->cache, &r, g->continuation ? &q1 : NULL, &v1, &nq1))
+            if (gal_sweep_case_run(&S->sc, S->kind, q, v, nq, &S->cache, &S->setup, &r, g->continuation ? &q1 : NULL,
+                                   &v1, &nq1))
                 S->nomem = 1;
             if (gal_sweep_record_write(S->outdir, fp, &r, q1, v1, nq1))
                 fprintf(stderr, "gallop sweep: case %ld: %s\n", c.row + 1, gal_error_message());
         }
         free(q), free(v);
         q = q1, v = v1, nq = nq1, prev = fp;
-        gal_par_case_done(S->par, computed);
+        gal_par_case_done(S->par, computed ? GAL_PAR_SETUP_COMPUTED + r.setup_reused : 0, computed ? r.setup_time_s : 0);
     }
     free(q), free(v);
 }
@@ -173,8 +175,10 @@ static int finish(sweep *S, long computed, double t0)
 {
     gal_sweep_result *rows = calloc((size_t)S->g.ncases, sizeof *rows);
     if (!rows) return fail("", gal_error(GAL_ENOMEM, "out of memory"));
-    gal_sweep_totals t = {S->kind == GAL_MODEL_FULL ? "full" : "reduced", gal_par_size(S->par), computed, 0, 0, 0, 0};
+    gal_sweep_totals t = {S->kind == GAL_MODEL_FULL ? "full" : "reduced", gal_par_size(S->par), computed, 0, 0, 0, 0,
+                          0, 0, 0, 0};
     t.resumed = S->g.ncases - computed;
+    gal_par_setups(S->par, &t.setups_computed, &t.setups_reused, &t.damping_computed, &t.setup_time_s);
     int st = collect(S, rows, &t.case_time_s, &t.failed);
     gal_scene base;
     if (!st) st = gal_scene_load(&base, S->path, S->user, S->nuser, NULL);
@@ -237,6 +241,7 @@ int gal_cli_sweep(int argc, char **argv)
         if (S->nomem) rc = fail("", gal_error(GAL_ENOMEM, "out of memory in a case"));
     }
     gal_par_free(S->par);
+    gal_sweep_setup_cache_clear(&S->setup);
     gal_sweep_grid_clear(&S->g);
     free(S);
     return rc;

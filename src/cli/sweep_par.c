@@ -17,7 +17,7 @@
 #include <mpi.h>
 #define TAG_REQUEST 1 /* a rank asks for a unit */
 #define TAG_UNIT 2    /* the answer: a long, -1 for none */
-#define TAG_DONE 3    /* a rank finished a case: an int, 1 computed, 0 resumed */
+#define TAG_DONE 3    /* a rank finished a case: two doubles, how (gal_par_case_done) and its set-up time */
 #endif
 
 #define PROGRESS_EVERY_S 2.0
@@ -27,6 +27,9 @@ struct gal_par {
     long nunits, ncases, next;     /* units handed out so far */
     long done, computed;           /* cases finished, of which computed now */
     long printed;                  /* done at the last progress line */
+    long setups, reused, damping;  /* computed cases with their own set-up, with a reused one, that
+                                    * built their damping */
+    double setup_time_s;
     int local_done, threaded;
     double t0, last_print;
     pthread_mutex_t lock;
@@ -107,18 +110,33 @@ static void progress(gal_par *p, int final)
             done, p->ncases, computed, done - computed, left, left ? eta : "0 s");
 }
 
-void gal_par_case_done(gal_par *p, int computed)
+/* a finished case counted (the lock held) */
+static void count(gal_par *p, int how, double setup_time_s)
+{
+    p->done++, p->computed += how != 0;
+    p->setups += how == GAL_PAR_SETUP_COMPUTED, p->reused += how >= GAL_PAR_SETUP_REUSED;
+    p->damping += how == GAL_PAR_SETUP_COMPUTED || how == GAL_PAR_SETUP_REUSED_MODES;
+    p->setup_time_s += setup_time_s;
+}
+
+void gal_par_case_done(gal_par *p, int how, double setup_time_s)
 {
 #ifdef GAL_MPI
     if (p->rank != 0) {
-        MPI_Send(&computed, 1, MPI_INT, 0, TAG_DONE, MPI_COMM_WORLD);
+        double msg[2] = {how, setup_time_s};
+        MPI_Send(msg, 2, MPI_DOUBLE, 0, TAG_DONE, MPI_COMM_WORLD);
         return;
     }
 #endif
     pthread_mutex_lock(&p->lock);
-    p->done++, p->computed += computed != 0;
+    count(p, how, setup_time_s);
     if (!p->threaded || p->size == 1) progress(p, 0);
     pthread_mutex_unlock(&p->lock);
+}
+
+void gal_par_setups(const gal_par *p, long *computed, long *reused, long *damping, double *time_s)
+{
+    *computed = p->setups, *reused = p->reused, *damping = p->damping, *time_s = p->setup_time_s;
 }
 
 /* units from the shared counter until none is left */
@@ -160,10 +178,10 @@ static void master(gal_par *p)
             continue;
         }
         if (s.MPI_TAG == TAG_DONE) {
-            int computed;
-            MPI_Recv(&computed, 1, MPI_INT, s.MPI_SOURCE, TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            double msg[2];
+            MPI_Recv(msg, 2, MPI_DOUBLE, s.MPI_SOURCE, TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             pthread_mutex_lock(&p->lock);
-            p->done++, p->computed += computed != 0;
+            count(p, (int)msg[0], msg[1]);
             pthread_mutex_unlock(&p->lock);
         } else {
             MPI_Recv(NULL, 0, MPI_BYTE, s.MPI_SOURCE, TAG_REQUEST, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
@@ -193,7 +211,8 @@ static void worker(gal_par *p)
 void gal_par_run(gal_par *p, long nunits, long ncases, gal_par_unit_fn fn, void *ctx, long *computed)
 {
     p->nunits = nunits, p->ncases = ncases, p->next = 0;
-    p->done = p->computed = 0;
+    p->done = p->computed = p->setups = p->reused = p->damping = 0;
+    p->setup_time_s = 0;
     p->printed = -1;
     p->local_done = 0;
     p->fn = fn, p->ctx = ctx;

@@ -18,8 +18,16 @@ gal_par *gal_par_free(gal_par *p);
 
 /* One unit of work; it calls gal_par_case_done after each of its cases. */
 typedef void (*gal_par_unit_fn)(void *ctx, long unit);
-/* A case finished: computed now (1) or found committed by an earlier run (0). */
-void gal_par_case_done(gal_par *p, int computed);
+/* A case finished: computed now with its own set-up (GAL_PAR_SETUP_COMPUTED), with its span's
+ * equilibrium, modes and damping from an earlier case of its process (GAL_PAR_SETUP_REUSED), with
+ * the equilibrium and modes but its damping built anew (GAL_PAR_SETUP_REUSED_MODES), or found
+ * committed by an earlier run (0); setup_time_s: its set-up's wall time (gal_sweep_result). */
+enum { GAL_PAR_SETUP_COMPUTED = 1, GAL_PAR_SETUP_REUSED = 2, GAL_PAR_SETUP_REUSED_MODES = 3 };
+void gal_par_case_done(gal_par *p, int how, double setup_time_s);
+/* Rank 0, after gal_par_run: of the cases computed by all ranks, those that computed their
+ * equilibrium and modes, those that reused them, those that built their damping (their own
+ * set-up's or anew), and the set-ups' wall time in all (s). */
+void gal_par_setups(const gal_par *p, long *computed, long *reused, long *damping, double *time_s);
 
 /* Units 0 .. nunits-1 (ncases cases in all) run over every process, each exactly once. Returns,
  * on rank 0, when every unit is finished (the others return when no unit is left for them);

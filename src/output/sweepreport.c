@@ -176,6 +176,10 @@ static void json_summary(gal_json *j, const gal_scene *sc, const gal_sweep_grid 
     gal_json_kv_num(j, "case_time_s", t->case_time_s);
     gal_json_kv_num(j, "cases_per_hour_per_rank",
                     t->computed > 0 && t->wall_time_s > 0 ? 3600.0 * t->computed / t->wall_time_s / t->ranks : NAN);
+    gal_json_kv_int(j, "setups_computed", t->setups_computed); /* equilibrium and modes (run/sweep.h) */
+    gal_json_kv_int(j, "setups_reused", t->setups_reused);
+    gal_json_kv_int(j, "damping_computed", t->damping_computed);
+    gal_json_kv_num(j, "setup_time_s", t->setup_time_s);
     gal_json_key(j, "failures");
     gal_json_arr_begin(j);
     for (long r = 0, n = 0; r < g->ncases && n < MAX_FAILURES; r++)

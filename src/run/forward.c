@@ -24,9 +24,9 @@ gal_data *gal_data_alloc(const gal_model *m)
 gal_data *gal_data_free(gal_data *d)
 {
     if (d) {
-        gal_equilibrium_clear(&d->eq);
-        gal_modes_clear(&d->md);
-        gal_damping_free(d->damping);
+        if (d->borrowed < GAL_STAGE_EQUILIBRIUM) gal_equilibrium_clear(&d->eq);
+        if (d->borrowed < GAL_STAGE_MODES) gal_modes_clear(&d->md);
+        if (!d->damping_borrowed) gal_damping_free(d->damping);
         free(d->wind_u);
         free(d->q_start);
         free(d->v_start);

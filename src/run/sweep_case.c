@@ -2,7 +2,8 @@
  * pipeline to the start, gal_run with the full or the scene's reduced integrator), or continued
  * from a given state (gal_data_start_from); the measures at the first probe; the coupled onset
  * about the mean-wind equilibrium as `gallop stability` finds it (analysis/onset.h), once per
- * span and process. An explicit bundle runs its full model and its coupled onset (bundle_dyn.h),
+ * span and process; the equilibrium and modes kept from case to case while their key holds
+ * (gal_sweep_setup_cache). An explicit bundle runs its full model and its coupled onset (bundle_dyn.h),
  * with each sub-conductor's measures. */
 #include "gallop/run/sweep.h"
 #include "gallop/analysis/measure.h"
@@ -131,14 +132,67 @@ static int run_bundle(const gal_scene *sc, gal_sweep_result *r)
     return st;
 }
 
-/* The run itself, its end state into q_end, v_end when given. */
+void gal_sweep_setup_cache_clear(gal_sweep_setup_cache *c)
+{
+    for (int i = 0; i < c->n; i++) {
+        gal_data_free(c->d[i]);
+        gal_model_free(c->m[i]);
+    }
+    memset(c, 0, sizeof *c);
+}
+
+/* The equilibrium and modes of d from the cache when it holds those of m's key (*reused: 1 with
+ * the damping, 2 without; gal_sweep_result.setup_reused). */
+static int setup_take(gal_sweep_setup_cache *c, const gal_model *m, gal_data *d, uint64_t *key, int *reused)
+{
+    *reused = 0;
+    if (!c) return GAL_OK;
+    int st = gal_stage_key(m, GAL_STAGE_MODES, key);
+    for (int i = 0; !st && i < c->n; i++)
+        if (c->key[i] == *key) {
+            if ((st = gal_data_share(m, d, c->d[i], GAL_STAGE_MODES))) return st;
+            *reused = d->damping_borrowed ? 1 : 2;
+            return GAL_OK;
+        }
+    return st;
+}
+
+/* A case's model and data into the cache (in place of the oldest), or freed when the case
+ * borrowed its set-up or failed before its modes. */
+static void setup_keep(gal_sweep_setup_cache *c, gal_model *m, gal_data *d, uint64_t key, int reused)
+{
+    if (c && !reused && d && d->stage >= GAL_STAGE_MODES && d->borrowed == GAL_STAGE_NONE) {
+        int i = c->next;
+        if (i < c->n) gal_data_free(c->d[i]), gal_model_free(c->m[i]);
+        else c->n++;
+        c->m[i] = m, c->d[i] = d, c->key[i] = key;
+        c->next = (i + 1) % GAL_SWEEP_SETUP_CACHE;
+        return;
+    }
+    gal_data_free(d);
+    gal_model_free(m);
+}
+
+/* The measures of a run into r. */
+static void measures_of(const gal_sim_measures *ms, const gal_sim_result *res, gal_sweep_result *r)
+{
+    r->horizontal_pp_m = ms->peak_to_peak[0], r->vertical_pp_m = ms->peak_to_peak[1];
+    r->twist_pp_deg = ms->peak_to_peak[3], r->frequency_hz = ms->frequency_hz[1];
+    r->tension_max_n = ms->tension_max_steady;
+    r->valid = res->checked ? res->valid : -1;
+    r->residual_max = res->checked ? res->residual_max : NAN;
+}
+
+/* The run itself, its end state into q_end, v_end when given; the set-up from and into `setup`. */
 static int run_case(const gal_scene *sc, gal_model_kind kind, const double *q0, const double *v0, int nq0,
-                    gal_sweep_result *r, double **q_end, double **v_end, int *nq)
+                    gal_sweep_setup_cache *setup, gal_sweep_result *r, double **q_end, double **v_end, int *nq)
 {
     int st;
+    uint64_t key = 0;
     gal_model *m = gal_model_alloc(sc, &st);
     gal_data *d = m ? gal_data_alloc(m) : NULL;
     if (m && !d) st = GAL_ENOMEM;
+    if (!st) st = setup_take(setup, m, d, &key, &r->setup_reused);
     if (!st) st = gal_forward(m, d, GAL_STAGE_START);
     const gal_integrator_type *T = NULL;
     if (!st) T = kind == GAL_MODEL_FULL ? &gal_integrator_full : &gal_integrator_reduced;
@@ -160,21 +214,17 @@ static int run_case(const gal_scene *sc, gal_model_kind kind, const double *q0, 
     if (!st) st = gal_run_to_state(m, d, T, &o, &res, q_end ? *q_end : NULL, v_end ? *v_end : NULL);
     gal_sim_measures ms;
     if (!st) st = gal_sim_measure(&res, 0, -1, &ms);
-    if (!st) {
-        r->horizontal_pp_m = ms.peak_to_peak[0], r->vertical_pp_m = ms.peak_to_peak[1];
-        r->twist_pp_deg = ms.peak_to_peak[3], r->frequency_hz = ms.frequency_hz[1];
-        r->tension_max_n = ms.tension_max_steady;
-        r->valid = res.checked ? res.valid : -1;
-        r->residual_max = res.checked ? res.residual_max : NAN;
-    }
+    if (!st) measures_of(&ms, &res, r);
+    for (int s = GAL_STAGE_EQUILIBRIUM; d && s <= GAL_STAGE_START; s++) r->setup_time_s += d->stage_time_s[s];
+    r->setup_time_s += res.build_time_s;
     gal_sim_result_clear(&res);
-    gal_data_free(d);
-    gal_model_free(m);
+    setup_keep(setup, m, d, key, r->setup_reused);
     return st;
 }
 
 int gal_sweep_case_run(const gal_scene *sc, gal_model_kind kind, const double *q0, const double *v0, int nq0,
-                       gal_sweep_onset_cache *cache, gal_sweep_result *r, double **q_end, double **v_end, int *nq)
+                       gal_sweep_onset_cache *cache, gal_sweep_setup_cache *setup, gal_sweep_result *r,
+                       double **q_end, double **v_end, int *nq)
 {
     double t0 = gal_wall_time();
     memset(r, 0, sizeof *r);
@@ -189,7 +239,7 @@ int gal_sweep_case_run(const gal_scene *sc, gal_model_kind kind, const double *q
                                      "bundle starts at rest; allowed: model = equivalent", sc->path)
                          : run_bundle(sc, r);
     else
-        st = run_case(sc, kind, q0, v0, nq0, r, q_end, v_end, nq);
+        st = run_case(sc, kind, q0, v0, nq0, setup, r, q_end, v_end, nq);
     r->has_onset = sc->ice.present && sc->ice.aero_table[0];
     if (!st && r->has_onset) st = onset_of(sc, cache, &r->onset_speed_m_s);
     r->status = st;

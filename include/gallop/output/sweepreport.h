@@ -39,6 +39,11 @@ typedef struct gal_sweep_totals {
     long computed, resumed, failed;  /* cases */
     double wall_time_s;              /* the whole sweep */
     double case_time_s;              /* sum of the cases' wall times (this run's and the resumed) */
+    long setups_computed, setups_reused; /* this run's cases: equilibrium and modes computed, or
+                                      * another case's of the same span (run/sweep.h) */
+    long damping_computed;           /* ... that built their structural damping (own set-up, or
+                                      * another damping ratio than the set-up they reused) */
+    double setup_time_s;             /* this run's set-ups' wall time in all */
 } gal_sweep_totals;
 
 /* DIR/sweep.csv (one row per case, in row order) and DIR/summary.json (the grid, the totals, per

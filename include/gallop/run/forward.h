@@ -10,9 +10,13 @@
  *   reduced      the reduced model's basis modes: the selected ones, none at or near 0 Hz (the
  *                reduced integrator, run/integrator.h, builds its basis on them: reduced/rom.h)
  * Every command calls it: `gallop modes` to the modes, `stability` to the modes, `accuracy` and the
- * runs (`simulate`, `compare`, run/sim.h) as far as their integrator needs. */
+ * runs (`simulate`, `compare`, run/sim.h) as far as their integrator needs. Another model's data of
+ * the same span may lend its equilibrium and modes (gal_data_share, forward_share.c: a sweep over
+ * the wind sets its span up once). */
 #ifndef GALLOP_FORWARD_H
 #define GALLOP_FORWARD_H
+
+#include <stdint.h>
 
 #include "gallop/loads/loads.h"
 #include "gallop/model/damping.h"
@@ -62,6 +66,10 @@ typedef struct gal_data {
     int basis;               /* modes in the basis */
     int sel[GAL_BASIS_MAX];  /* their indices in md */
     double stage_time_s[GAL_STAGE_COUNT]; /* wall time of each stage */
+    /* the stages up to this one are another data's (gal_data_share): read, never freed, here;
+     * GAL_STAGE_NONE: all its own */
+    gal_stage borrowed;
+    int damping_borrowed;    /* 1: damping is the other data's too */
 } gal_data;
 
 gal_data *gal_data_alloc(const gal_model *m);
@@ -76,6 +84,23 @@ int gal_forward(const gal_model *m, gal_data *d, gal_stage upto);
  * d forwarded to the start stage, then q_start = q and v_start = v (nq entries each; v NULL: at
  * rest), and the wind blows at full speed from t = 0 (no ramp: the span is already in it). */
 int gal_data_start_from(const gal_model *m, gal_data *d, const double *q, const double *v);
+
+/* ---- reuse of the set-up between models (a sweep over the wind: issue 13) ---- */
+
+/* A fingerprint of what the stages up to s read from m (s: GAL_STAGE_EQUILIBRIUM, the rod's
+ * parameters, its equilibrium specification and the statics options; GAL_STAGE_MODES, those and
+ * the modes wanted; the damping ratio is not in it: gal_data_share builds the damping anew when it
+ * differs). Two models of one key find the same equilibrium and modes, bit for bit. GAL_EINPUT
+ * for another stage. */
+int gal_stage_key(const gal_model *m, gal_stage s, uint64_t *key);
+
+/* Take the stages up to `upto` (GAL_STAGE_EQUILIBRIUM or GAL_STAGE_MODES) of `from` into d: d of
+ * another model m whose gal_stage_key at `upto` is from's (GAL_EINPUT otherwise), not forwarded
+ * yet; `from` forwarded at least to GAL_STAGE_MODES. The equilibrium (its rod) and the modes are
+ * borrowed, not copied: `from` must outlive d and is not changed by d's later stages; the
+ * structural damping too when m's damping ratio is from's, else it is built for d (as the modes
+ * stage builds it). d->stage_time_s of the stages taken: 0. */
+int gal_data_share(const gal_model *m, gal_data *d, const gal_data *from, gal_stage upto);
 
 #ifdef __cplusplus
 }

@@ -89,6 +89,12 @@ typedef struct gal_sweep_result {
     int valid;                         /* the reduced model's self-check: 1, 0; -1 not checked */
     double residual_max;
     double wall_time_s;                /* the whole case: set-up, run, onset */
+    /* this process only (not in the case's record): */
+    int setup_reused;                  /* 1: the equilibrium, modes and damping were another
+                                        * case's (gal_sweep_setup_cache); 2: the equilibrium and
+                                        * modes, the damping built anew (another ratio); 0: none */
+    double setup_time_s;               /* the pipeline's stages to the start and the reduced
+                                        * model's own set-up (s) */
     /* an explicit bundle ([bundle] model = explicit): the figures above are its centroid's (twist:
      * the bundle's rotation; tension: summed over the sub-conductors), and per sub-conductor k at
      * the first probe over the centroid's steady window: */
@@ -108,6 +114,22 @@ typedef struct gal_sweep_onset_cache {
     double speed[GAL_SWEEP_ONSET_CACHE];
 } gal_sweep_onset_cache;
 
+/* The set-ups of spans kept by this process between its cases (forward.h, gal_data_share): the
+ * equilibrium, modes and structural damping of the last GAL_SWEEP_SETUP_CACHE cases that computed
+ * them, taken by a later case whose stage key (gal_stage_key at the modes) is the same: a sweep
+ * over the wind, or over any key the equilibrium and the modes do not read, finds them once per
+ * span (while no more than GAL_SWEEP_SETUP_CACHE spans alternate). */
+#define GAL_SWEEP_SETUP_CACHE 16
+struct gal_model;
+struct gal_data;
+typedef struct gal_sweep_setup_cache {
+    int n, next;
+    struct gal_model *m[GAL_SWEEP_SETUP_CACHE]; /* owned */
+    struct gal_data *d[GAL_SWEEP_SETUP_CACHE];  /* owned: forwarded at least to the modes */
+    uint64_t key[GAL_SWEEP_SETUP_CACHE];
+} gal_sweep_setup_cache;
+void gal_sweep_setup_cache_clear(gal_sweep_setup_cache *c);
+
 /* 1 when sc is an explicit bundle ([bundle] model = explicit, more than one sub-conductor): its
  * cases run the explicit bundle's full model whatever the kind (it has no reduced model in a sweep),
  * start at rest (no continuation) and take its coupled onset (bundle_dyn.h). */
@@ -115,12 +137,15 @@ int gal_sweep_explicit_bundle(const gal_scene *sc);
 
 /* Run scene sc with the full model (kind GAL_MODEL_FULL) or the scene's reduced model, from the
  * start state (q0, v0) of nq0 entries each when q0 is given (a continuation), else as `gallop
- * simulate` starts; measures at the first probe; the onset (cache may be NULL). When q_end is
+ * simulate` starts; measures at the first probe; the onset (cache may be NULL); the equilibrium and
+ * modes from setup when it holds those of the same key, else computed and kept there (setup may be
+ * NULL: computed, not kept); the figures are the same either way, bit for bit. When q_end is
  * given, *q_end and *v_end receive the final state (malloc'ed, *nq entries; NULL on failure).
  * A failed case is a result (status, message), not an error: returns GAL_ENOMEM only when memory
  * ran out, else GAL_OK. */
 int gal_sweep_case_run(const gal_scene *sc, gal_model_kind kind, const double *q0, const double *v0, int nq0,
-                       gal_sweep_onset_cache *cache, gal_sweep_result *r, double **q_end, double **v_end, int *nq);
+                       gal_sweep_onset_cache *cache, gal_sweep_setup_cache *setup, gal_sweep_result *r,
+                       double **q_end, double **v_end, int *nq);
 
 #ifdef __cplusplus
 }
