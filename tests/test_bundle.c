@@ -8,6 +8,7 @@
 #include "gallop/model/model.h"
 #include "gallop/run/forward.h"
 #include "gallop/scene/scene.h"
+#include "rod_fd.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -70,40 +71,6 @@ static double irvine(double lam2)
     return 2 * lo / GAL_PI;
 }
 
-/* Max errors of the gradient of rod term k against central differences of its energy (every
- * configuration entry) and of its tangent against central differences of its gradient (free dofs),
- * with the largest gradient and tangent entries: err[4]. */
-static void fd_errors(const gal_rod *rod, int k, double *q, double err[4])
-{
-    int nq = rod->nq, n = rod->ndof;
-    double *g = malloc(nq * sizeof(double)), *gp = malloc(nq * sizeof(double)), *gm = malloc(nq * sizeof(double));
-    double *col = malloc(n * sizeof(double)), *ej = calloc(n, sizeof(double)), U, Up, Um;
-    gal_csc *K = gal_csc_clone(rod->K);
-    CHECK(gal_rod_eval_term(rod, k, q, &U, g, K) == GAL_OK, "%s", gal_error_message());
-    memset(err, 0, 4 * sizeof(double));
-    for (int i = 0; i < nq; i++) {
-        double h = i < 3 * rod->nn ? 1e-5 : 1e-6, save = q[i];
-        q[i] = save + h, gal_rod_eval_term(rod, k, q, &Up, NULL, NULL);
-        q[i] = save - h, gal_rod_eval_term(rod, k, q, &Um, NULL, NULL);
-        q[i] = save;
-        err[0] = fmax(err[0], fabs((Up - Um) / (2 * h) - g[i])), err[1] = fmax(err[1], fabs(g[i]));
-    }
-    for (int j = 0; j < n; j++) {
-        int i = rod->free_q[j];
-        double h = i < 3 * rod->nn ? 1e-6 : 1e-7, save = q[i];
-        q[i] = save + h, gal_rod_eval_term(rod, k, q, NULL, gp, NULL);
-        q[i] = save - h, gal_rod_eval_term(rod, k, q, NULL, gm, NULL);
-        q[i] = save;
-        ej[j] = 1, gal_csc_symv(K, ej, col), ej[j] = 0;
-        for (int r = 0; r < n; r++) {
-            err[2] = fmax(err[2], fabs((gp[rod->free_q[r]] - gm[rod->free_q[r]]) / (2 * h) - col[r]));
-            err[3] = fmax(err[3], fabs(col[r]));
-        }
-    }
-    free(g), free(gp), free(gm), free(col), free(ej);
-    gal_csc_free(K);
-}
-
 /* The differential-stretch term (src/rod/bundle_irvine.c) of a twin turned 30 deg (one field) and
  * of a quad (two), on a sagged 3-D curve with random twists and fields: its gradient against
  * finite differences of its energy and its tangent against finite differences of its gradient;
@@ -142,7 +109,7 @@ static void test_irvine_derivatives(void)
         }
         double e[4];
         if (k >= 0) {
-            fd_errors(rod, k, q, e);
+            rod_fd_errors(rod, k, q, e);
             CHECK(e[0] <= 1e-6 * e[1], "bundle_irvine (%d fields): gradient vs FD: %g of %g", nf, e[0], e[1]);
             CHECK(e[2] <= 1e-5 * e[3], "bundle_irvine (%d fields): tangent vs FD: %g of %g", nf, e[2], e[3]);
             printf("    (bundle_irvine, %d field%s: force error %.2g of %.2g, tangent error %.2g of %.2g)\n", nf,

@@ -6,6 +6,7 @@
  * differences where the quartic term outweighs the tension's. */
 #include "check.h"
 #include "gallop.h"
+#include "rod_fd.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -16,39 +17,6 @@ static int term_index(const gal_rod *rod, const gal_rod_term *t)
     for (int k = 0; k < rod->nterm; k++)
         if (rod->term[k] == t) return k;
     return -1;
-}
-
-/* max |FD - analytic| of term k's gradient (energy differences) and tangent (gradient differences),
- * with the largest entries: err[4] */
-static void fd_errors(const gal_rod *rod, int k, double *q, double err[4])
-{
-    int nq = rod->nq, n = rod->ndof;
-    double *g = malloc(nq * sizeof(double)), *gp = malloc(nq * sizeof(double)), *gm = malloc(nq * sizeof(double));
-    double *col = malloc(n * sizeof(double)), *ej = calloc(n, sizeof(double)), U, Up, Um;
-    gal_csc *K = gal_csc_clone(rod->K);
-    CHECK(gal_rod_eval_term(rod, k, q, &U, g, K) == GAL_OK, "%s", gal_error_message());
-    memset(err, 0, 4 * sizeof(double));
-    for (int i = 0; i < nq; i++) {
-        double h = i < 3 * rod->nn ? 1e-5 : 1e-6, save = q[i];
-        q[i] = save + h, gal_rod_eval_term(rod, k, q, &Up, NULL, NULL);
-        q[i] = save - h, gal_rod_eval_term(rod, k, q, &Um, NULL, NULL);
-        q[i] = save;
-        err[0] = fmax(err[0], fabs((Up - Um) / (2 * h) - g[i])), err[1] = fmax(err[1], fabs(g[i]));
-    }
-    for (int j = 0; j < n; j++) {
-        int i = rod->free_q[j];
-        double h = i < 3 * rod->nn ? 1e-6 : 1e-7, save = q[i];
-        q[i] = save + h, gal_rod_eval_term(rod, k, q, NULL, gp, NULL);
-        q[i] = save - h, gal_rod_eval_term(rod, k, q, NULL, gm, NULL);
-        q[i] = save;
-        ej[j] = 1, gal_csc_symv(K, ej, col), ej[j] = 0;
-        for (int r = 0; r < n; r++) {
-            err[2] = fmax(err[2], fabs((gp[rod->free_q[r]] - gm[rod->free_q[r]]) / (2 * h) - col[r]));
-            err[3] = fmax(err[3], fabs(col[r]));
-        }
-    }
-    free(g), free(gp), free(gm), free(col), free(ej);
-    gal_csc_free(K);
 }
 
 /* A straight rod of 10 elements stretched by eps, twists theta_j (edges) alternating so that every
@@ -91,7 +59,7 @@ static void test_helix_energy(void)
             int kt = term_index(rod, t[i]);
             if (kt < 0) continue;
             for (int j = 0; j < rod->nq; j++) q[j] += 0.02 * sin(1.7 * j + big); /* off the straight line */
-            fd_errors(rod, kt, q, err);
+            rod_fd_errors(rod, kt, q, err);
             printf("    (%s: force error %.2g of %.2g, tangent error %.2g of %.2g)\n", t[i]->name, err[0], err[1],
                    err[2], err[3]);
             CHECK(err[0] <= 1e-6 * err[1], "%s: gradient vs FD: %g of %g", t[i]->name, err[0], err[1]);

@@ -3,6 +3,7 @@
 #include "check.h"
 #include "gallop.h"
 #include "gallop/rod/rod.h"
+#include "rod_fd.h"
 
 #include <gsl/gsl_rng.h>
 
@@ -153,49 +154,6 @@ static void test_uniform_twist_energy(void)
     gal_rod_free(rod);
 }
 
-/* Energy (and gradient, tangent into K) of term k alone, or of the whole rod with k < 0. */
-static int eval_k(const gal_rod *rod, int k, const double *q, double *U, double *g, gal_csc *K)
-{
-    return k < 0 ? gal_rod_eval(rod, q, U, g, K) : gal_rod_eval_term(rod, k, q, U, g, K);
-}
-
-/* Max errors of the gradient against central differences of the energy (over every entry) and
- * of the tangent against central differences of the gradient (over the free dofs). */
-static void fd_errors(const gal_rod *rod, int k, double *q, double err[4])
-{
-    int nq = rod->nq, n = rod->ndof;
-    double *g = malloc(nq * sizeof(double)), *gp = malloc(nq * sizeof(double)),
-           *gm = malloc(nq * sizeof(double)), *col = malloc(n * sizeof(double)),
-           *ej = calloc(n, sizeof(double));
-    gal_csc *K = gal_csc_clone(rod->K);
-    double U;
-    CHECK(eval_k(rod, k, q, &U, g, K) == GAL_OK, "eval term %d", k);
-    memset(err, 0, 4 * sizeof(double));
-    for (int i = 0; i < nq; i++) {
-        double h = i < 3 * rod->nn ? 1e-5 : 1e-6, save = q[i], Up, Um;
-        q[i] = save + h; eval_k(rod, k, q, &Up, NULL, NULL);
-        q[i] = save - h; eval_k(rod, k, q, &Um, NULL, NULL);
-        q[i] = save;
-        err[0] = fmax(err[0], fabs((Up - Um) / (2 * h) - g[i]));
-        err[1] = fmax(err[1], fabs(g[i]));
-    }
-    for (int j = 0; j < n; j++) {
-        int i = rod->free_q[j];
-        double h = i < 3 * rod->nn ? 1e-6 : 1e-7, save = q[i];
-        q[i] = save + h; eval_k(rod, k, q, NULL, gp, NULL);
-        q[i] = save - h; eval_k(rod, k, q, NULL, gm, NULL);
-        q[i] = save;
-        ej[j] = 1; gal_csc_symv(K, ej, col); ej[j] = 0;
-        for (int r = 0; r < n; r++) {
-            double fd = (gp[rod->free_q[r]] - gm[rod->free_q[r]]) / (2 * h);
-            err[2] = fmax(err[2], fabs(fd - col[r]));
-            err[3] = fmax(err[3], fabs(col[r]));
-        }
-    }
-    free(g); free(gp); free(gm); free(col); free(ej);
-    gal_csc_free(K);
-}
-
 /* Every term on, on a curved and twisted configuration: each term's gradient against finite
  * differences of its own energy, its tangent against finite differences of its gradient, and the
  * terms sum to the whole. */
@@ -216,7 +174,7 @@ static void test_derivatives_per_term(void)
         CHECK(strcmp(rod->term[k]->name, want[k]) == 0, "term %d is %s, %s expected", k,
               rod->term[k]->name, want[k]);
         double e[4];
-        fd_errors(rod, k, q, e);
+        rod_fd_errors(rod, k, q, e);
         CHECK(e[0] <= 1e-6 * e[1], "%s: gradient vs FD of its energy: error %g of %g",
               rod->term[k]->name, e[0], e[1]);
         CHECK(e[2] <= 1e-5 * e[3], "%s: tangent vs FD of its gradient: error %g of %g",
@@ -252,7 +210,7 @@ static void test_bundle_terms(void)
           "bundle terms in place");
     for (int k = 3; k <= 5; k += 2) {
         double e[4];
-        fd_errors(rod, k, q, e);
+        rod_fd_errors(rod, k, q, e);
         CHECK(e[0] <= 1e-6 * e[1], "%s: gradient vs FD of its energy: error %g of %g",
               rod->term[k]->name, e[0], e[1]);
         CHECK(e[2] <= 1e-5 * e[3], "%s: tangent vs FD of its gradient: error %g of %g",

@@ -145,15 +145,7 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle_si
     gal_json_obj_end(j);
     json_run(j, "full", F, mf);
     json_run(j, "reduced", R, mr);
-    gal_json_kv_num(j, "frequency_error", c->frequency_error);
-    gal_json_kv_num(j, "amplitude_error", c->amplitude_error);
-    gal_json_key(j, "amplitude_errors");
-    gal_json_obj_begin(j);
-    gal_json_kv_num(j, "vertical", c->err_vertical);
-    gal_json_kv_num(j, "horizontal", c->err_horizontal);
-    gal_json_kv_num(j, "twist", c->err_twist);
-    gal_json_obj_end(j);
-    gal_json_kv_num(j, "speedup", c->speedup);
+    gal_compare_figures_json(j, c);
     return json_subs(j, F, R, mf->steady_from_s);
 }
 

@@ -240,6 +240,19 @@ static int write_compare_csv(gal_outset *o, const gal_sim_result *full, const ga
     return gal_outset_close(o, fp);
 }
 
+void gal_compare_figures_json(gal_json *j, const gal_compare_figures *c)
+{
+    gal_json_kv_num(j, "frequency_error", c->frequency_error);
+    gal_json_kv_num(j, "amplitude_error", c->amplitude_error);
+    gal_json_key(j, "amplitude_errors");
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "vertical", c->err_vertical);
+    gal_json_kv_num(j, "horizontal", c->err_horizontal);
+    gal_json_kv_num(j, "twist", c->err_twist);
+    gal_json_obj_end(j);
+    gal_json_kv_num(j, "speedup", c->speedup);
+}
+
 static int write_compare_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *full,
                                  const gal_sim_result *red, const gal_sim_measures *mf, const gal_sim_measures *mr,
                                  const gal_compare_figures *c)
@@ -258,15 +271,7 @@ static int write_compare_summary(gal_outset *o, const gal_scene *sc, const gal_s
     gal_json_obj_begin(j);
     json_run(j, red, mr);
     gal_json_obj_end(j);
-    gal_json_kv_num(j, "frequency_error", c->frequency_error);
-    gal_json_kv_num(j, "amplitude_error", c->amplitude_error);
-    gal_json_key(j, "amplitude_errors");
-    gal_json_obj_begin(j);
-    gal_json_kv_num(j, "vertical", c->err_vertical);
-    gal_json_kv_num(j, "horizontal", c->err_horizontal);
-    gal_json_kv_num(j, "twist", c->err_twist);
-    gal_json_obj_end(j);
-    gal_json_kv_num(j, "speedup", c->speedup);
+    gal_compare_figures_json(j, c);
     return GAL_OK;
 }
 

@@ -6,6 +6,7 @@
 #include "gallop/scene/scene.h"
 #include "gallop/run/sim.h"
 #include "gallop/analysis/measure.h"
+#include "gallop/output/json.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -16,6 +17,10 @@ typedef struct gal_compare_figures {
     double err_vertical, err_horizontal, err_twist;
     double speedup;                                  /* full over reduced wall time per simulated second */
 } gal_compare_figures;
+
+/* compare's summary.json figures into the open object of j: frequency_error, amplitude_error,
+ * amplitude_errors {vertical, horizontal, twist}, speedup (the single rod's and the bundle's). */
+void gal_compare_figures_json(gal_json *j, const gal_compare_figures *c);
 
 /* DIR/trace.csv and DIR/summary.json of `gallop simulate`, one output set. */
 int gal_sim_write(const char *dir, const gal_scene *sc, const gal_sim_result *r);
