@@ -141,6 +141,22 @@ static void quad_clear(gal_bundle_rom *r, gal_model *m, gal_bundle *b, gal_modes
     gal_model_free(m);
 }
 
+/* max |V^T M0 V - I| of the basis (y: ndof of scratch). */
+static double orthonormality_error(const gal_bundle_rom *r, double *y)
+{
+    int n = r->ndof;
+    double e = 0;
+    for (int c = 0; c < r->r; c++) {
+        gal_csc_symv(r->M0, r->V + (size_t)c * n, y);
+        for (int k = 0; k < r->r; k++) {
+            double p = 0;
+            for (int j = 0; j < n; j++) p += r->V[(size_t)k * n + j] * y[j];
+            e = fmax(e, fabs(p - (k == c)));
+        }
+    }
+    return e;
+}
+
 static void test_basis(void)
 {
     gal_model *m;
@@ -153,14 +169,7 @@ static void test_basis(void)
         double *y = malloc((size_t)n * sizeof(double)), e = 0, ek = 0;
         for (int k = 0; k < md.n; k++) nm += md.mode[k].selected != 0;
         CHECK(r->nmodes == nm && r->r == nm + nm * (nm + 1) / 2 + 4 + 4 * nm, "basis %d of %d modes", r->r, nm);
-        for (int c = 0; c < r->r; c++) {
-            gal_csc_symv(r->M0, r->V + (size_t)c * n, y);
-            for (int k = 0; k < r->r; k++) {
-                double p = 0;
-                for (int j = 0; j < n; j++) p += r->V[(size_t)k * n + j] * y[j];
-                e = fmax(e, fabs(p - (k == c)));
-            }
-        }
+        e = orthonormality_error(r, y);
         for (int c = 0, s = 0; c < md.n; c++) { /* the reduced stiffness of the modes: omega^2 */
             if (!md.mode[c].selected) continue;
             gal_csc_symv(r->K0, r->V + (size_t)s * n, y);
@@ -237,14 +246,7 @@ static void test_inertia_vectors(void)
         if (r && iv) {
             int n = r->ndof;
             double *y = malloc((size_t)n * sizeof(double)), e = 0;
-            for (int c = 0; c < r->r; c++) {
-                gal_csc_symv(r->M0, r->V + (size_t)c * n, y);
-                for (int k = 0; k < r->r; k++) {
-                    double p = 0;
-                    for (int j = 0; j < n; j++) p += r->V[(size_t)k * n + j] * y[j];
-                    e = fmax(e, fabs(p - (k == c)));
-                }
-            }
+            e = orthonormality_error(r, y);
             CHECK(e < 1e-8, "V^T M0 V - I with the inertia vectors: %g", e);
             free(y);
         }
