@@ -14,6 +14,51 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* y = A x (y += A x when add), A r x r row-major: four rows at a time, each row's sum over j in
+ * order from 0 (the same sums as one row at a time, four independent chains instead of one) */
+static void mult(int r, const double *A, const double *x, double *y, int add)
+{
+    int i = 0;
+    for (; i + 4 <= r; i += 4) {
+        const double *a0 = A + (size_t)i * r, *a1 = a0 + r, *a2 = a1 + r, *a3 = a2 + r;
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        for (int j = 0; j < r; j++) s0 += a0[j] * x[j], s1 += a1[j] * x[j], s2 += a2[j] * x[j], s3 += a3[j] * x[j];
+        if (add) y[i] += s0, y[i + 1] += s1, y[i + 2] += s2, y[i + 3] += s3;
+        else y[i] = s0, y[i + 1] = s1, y[i + 2] = s2, y[i + 3] = s3;
+    }
+    for (; i < r; i++) {
+        double s = 0;
+        for (int j = 0; j < r; j++) s += A[(size_t)i * r + j] * x[j];
+        y[i] = add ? y[i] + s : s;
+    }
+}
+
+/* b = A^-1 b from gal_dense_lu_factor's LU: gal_dense_lu_solve's operations in its order, the
+ * forward substitution by rows (contiguous), four rows at a time */
+static void lu_solve(const double *A, int r, const int *piv, double *b)
+{
+    for (int k = 0; k < r; k++) { /* P b: every swap, in order, before L */
+        double t = b[piv[k]];
+        b[piv[k]] = b[k], b[k] = t;
+    }
+    int i = 1;
+    for (; i + 4 <= r; i += 4) { /* b_i -= L_ik b_k, k = 0 .. i-1 in order */
+        const double *l0 = A + (size_t)i * r, *l1 = l0 + r, *l2 = l1 + r, *l3 = l2 + r;
+        double s0 = b[i], s1 = b[i + 1], s2 = b[i + 2], s3 = b[i + 3];
+        for (int k = 0; k < i; k++) s0 -= l0[k] * b[k], s1 -= l1[k] * b[k], s2 -= l2[k] * b[k], s3 -= l3[k] * b[k];
+        b[i] = s0;
+        s1 -= l1[i] * b[i], b[i + 1] = s1;
+        s2 -= l2[i] * b[i], s2 -= l2[i + 1] * b[i + 1], b[i + 2] = s2;
+        s3 -= l3[i] * b[i], s3 -= l3[i + 1] * b[i + 1], s3 -= l3[i + 2] * b[i + 2], b[i + 3] = s3;
+    }
+    for (; i < r; i++)
+        for (int k = 0; k < i; k++) b[i] -= A[(size_t)i * r + k] * b[k];
+    for (int k = r - 1; k >= 0; k--) {
+        for (int j = k + 1; j < r; j++) b[k] -= A[(size_t)k * r + j] * b[j];
+        b[k] /= A[(size_t)k * r + k];
+    }
+}
+
 int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
 {
     const gal_rod *rod = m->rod;
@@ -96,13 +141,16 @@ static double residual(gal_rom *m, double *strict, double *raw)
     int dg = m->o.rho_inf == 1.0;
     if (dg) discrete_gradient(m);
     const gal_rom_qm *qm = m->qm && m->qm->inertia ? m->qm : NULL; /* the manifold's mass (qm.h) */
+    double *c = m->res; /* the damping force Cr v_f (on the manifold its own, qm->d1) */
+    if (qm) memcpy(c, qm->d1, (size_t)r * sizeof(double));
+    else {
+        for (int j = 0; j < r; j++) m->da[j] = (1 - af) * m->v1[j] + af * m->v[j]; /* scratch */
+        mult(r, m->Cr, m->da, c, 0);
+    }
     for (int i = 0; i < r; i++) {
-        double c = 0;
-        for (int j = 0; j < r && !qm; j++) c += m->Cr[i * r + j] * ((1 - af) * m->v1[j] + af * m->v[j]);
         double fi = dg ? m->fdg[i] : (1 - af) * m->fi1[i] + af * m->fi[i];
         double in = qm ? qm->f1[i] : (1 - am) * m->a1[i] + am * m->a[i];
-        if (qm) c = qm->d1[i];
-        m->res[i] = in + c + fi - (1 - af) * m->fe1[i] - af * m->fe[i];
+        m->res[i] = in + c[i] + fi - (1 - af) * m->fe1[i] - af * m->fe[i];
         rn = fmax(rn, fabs(m->res[i]));
         sc = fmax(sc, fabs(m->fi1[i]) + fabs(m->fe1[i]));
     }
@@ -135,11 +183,7 @@ static void carry_internal(gal_rom *m, double *xs)
 {
     int r = m->r;
     for (int k = 0; k < r; k++) xs[k] = m->x1[k] - xs[k];
-    for (int i = 0; i < r; i++) {
-        double s = 0;
-        for (int j = 0; j < r; j++) s += m->Kr[i * r + j] * xs[j];
-        m->fi1[i] += s;
-    }
+    mult(r, m->Kr, xs, m->fi1, 1);
 }
 
 /* A linearly implicit step (o.one_pass): the internal force at the predictor, the loads
@@ -156,7 +200,7 @@ static int linear_step(gal_rom *m, double h)
     for (int pass = 0; pass < 2; pass++) {
         if (!isfinite(residual(m, &rs, &raw))) return gal_error(GAL_EFAIL, "reduced model: the residual is not finite");
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
-        gal_dense_lu_solve(m->J, r, m->piv, m->da);
+        lu_solve(m->J, r, m->piv, m->da);
         memcpy(xs, m->x1, (size_t)r * sizeof(double));
         for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
         newmark(m, h);
@@ -210,7 +254,7 @@ static int newton(gal_rom *m, double h)
             fresh = 0;
         }
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
-        gal_dense_lu_solve(m->J, r, m->piv, m->da);
+        lu_solve(m->J, r, m->piv, m->da);
         for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
         m->newton_iterations++;
     }
