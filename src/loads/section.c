@@ -97,7 +97,7 @@ int gal_aero_terms(unsigned flags, const gal_aero_term *list[3])
 /* The flow: the normal part of the relative wind, its speed, direction and angle of attack, and
  * the coefficients there. GAL_OK with fl->V = 0 when there is no wind. */
 static int flow(const gal_aero_table *t, const double tan[3], const double d1[3],
-                const double wrel[3], double rho, double diam, gal_aero_flow *fl)
+                const double wrel[3], double rho, double diam, int deriv, gal_aero_flow *fl)
 {
     double e1[3], e2[3];
     int st = frame(tan, d1, e1, e2, fl->e3);
@@ -115,7 +115,8 @@ static int flow(const gal_aero_table *t, const double tan[3], const double d1[3]
         fl->wh[i] = (x * e1[i] + y * e2[i]) / fl->V;
         fl->lh[i] = (x * e2[i] - y * e1[i]) / fl->V;
     }
-    gal_aero_eval(t, atan2(y, x), fl->c, fl->dc);
+    if (!deriv) fl->dc[0] = fl->dc[1] = fl->dc[2] = 0; /* the slopes only for the derivative */
+    gal_aero_eval(t, atan2(y, x), fl->c, deriv ? fl->dc : NULL);
     return GAL_OK;
 }
 
@@ -129,10 +130,10 @@ int gal_aero_load_terms(const gal_aero_table *t, const double tan[3], const doub
     if (df) memset(df, 0, 9 * sizeof(double));
     if (dm) dm[0] = dm[1] = dm[2] = 0.0;
     gal_aero_flow fl;
-    int st = flow(t, tan, d1, wrel, rho, diam, &fl);
+    int deriv = df || dm;
+    int st = flow(t, tan, d1, wrel, rho, diam, deriv, &fl);
     if (st || fl.V == 0) return st;
     gal_aero_sum s = {{0, 0, 0}, 0, {0}, {0, 0, 0}};
-    int deriv = df || dm;
     for (int k = 0; k < nterms; k++) terms[k]->add(&fl, deriv, &s);
     double q = 0.5 * rho * diam, V = fl.V;         /* f = q V^2 g, m = q d V^2 cm */
     if (f)
