@@ -3,9 +3,13 @@
  * ratio and changes with the span and the modes wanted; a data that borrows the equilibrium and
  * modes of another model's reaches the start exactly where its own pipeline does (the wind-dependent
  * start under the mean wind included), with its damping borrowed or built for its own ratio; a
- * share across keys is refused. */
+ * share across keys is refused. The reduced model's own set-up (rom.h gal_rom_setup_alloc) made at
+ * one wind and copied at another is the model computed alone there, bit for bit, and is not
+ * changed by the runs it serves. */
 #include "check.h"
 #include "gallop.h"
+#include "gallop/reduced/ecsw.h"
+#include "reduced/hyper.h"
 
 /* iced_gallop on a coarse mesh, with one more override (NULL: none) */
 static gal_model *model_with(const char *extra)
@@ -99,9 +103,105 @@ done:
     gal_model_free(a), gal_model_free(b), gal_model_free(z), gal_model_free(c);
 }
 
+/* The reduced model's options and loads of data d, as the reduced integrator takes them. */
+static void rom_opts_of(const gal_data *d, gal_rom_opts *o, gal_force *F)
+{
+    gal_rom_default_opts(o);
+    o->damping = d->damping;
+    memset(F, 0, sizeof *F);
+    if (d->loads.table) F->eval = gal_loads_full, F->element = gal_loads_element, F->ctx = (void *)&d->loads;
+}
+
+/* Whether two models are the same, bit for bit: basis, reduced matrices, samples and state. */
+static int same_rom(const gal_rom *a, const gal_rom *b)
+{
+    int n = a->ndof, r = a->r;
+    if (r != b->r || a->nmodes != b->nmodes || memcmp(a->V, b->V, (size_t)n * r * sizeof(double)) ||
+        memcmp(a->Cr, b->Cr, (size_t)r * r * sizeof(double)) || memcmp(a->K0r, b->K0r, (size_t)r * r * sizeof(double)) ||
+        memcmp(a->x, b->x, (size_t)r * sizeof(double)) || memcmp(a->v, b->v, (size_t)r * sizeof(double)) ||
+        memcmp(a->fi, b->fi, (size_t)r * sizeof(double)) || memcmp(a->fe, b->fe, (size_t)r * sizeof(double)) ||
+        a->fscale != b->fscale || a->ufloor != b->ufloor || !a->hyper != !b->hyper)
+        return 0;
+    if (!a->hyper) return 1;
+    for (int s = 0; s < 2; s++) {
+        const gal_rom_hyper_set *x = &a->hyper->set[s], *y = &b->hyper->set[s];
+        if (x->n != y->n || memcmp(x->elem, y->elem, (size_t)x->n * sizeof(int)) ||
+            memcmp(x->w, y->w, (size_t)x->n * sizeof(double)) || x->fit_error != y->fit_error)
+            return 0;
+    }
+    gal_rom_hyper_info p, q;
+    gal_rom_hyper_get_info(a, &p), gal_rom_hyper_get_info(b, &q);
+    return !memcmp(a->hyper->fc, b->hyper->fc, (size_t)r * sizeof(double)) && a->hyper->Uc == b->hyper->Uc &&
+           p.train_element_evals == q.train_element_evals && p.train_full_evals == q.train_full_evals &&
+           p.load_elements == q.load_elements && p.snapshots == q.snapshots;
+}
+
+static void test_rom_setup(void)
+{
+    gal_model *a = model_with("wind.speed=4"), *b = model_with("wind.speed=12");
+    gal_data *da = a ? gal_data_alloc(a) : NULL, *db = b ? gal_data_alloc(b) : NULL;
+    gal_rom *S = NULL, *alone = NULL, *copy = NULL, *other = NULL, *at4 = NULL;
+    double *V0 = NULL;
+    if (!da || !db) goto done;
+    CHECK(gal_forward(a, da, GAL_STAGE_REDUCED) == GAL_OK, "%s", gal_error_message());
+    CHECK(gal_data_share(b, db, da, GAL_STAGE_MODES) == GAL_OK && gal_forward(b, db, GAL_STAGE_REDUCED) == GAL_OK,
+          "%s", gal_error_message());
+    CHECK(db->rom_setup == da->rom_setup, "the reduced set-up's holder borrowed with the modes");
+    gal_rom_opts oa, ob;
+    gal_force Fa, Fb;
+    rom_opts_of(da, &oa, &Fa), rom_opts_of(db, &ob, &Fb);
+    const gal_rod *rod = da->eq.rod;
+    S = gal_rom_setup_alloc(rod, da->eq.q, &da->md, da->sel, da->basis, &oa);
+    CHECK(S != NULL && S->hyper && S->hyper->set[1].n == 0, "a set-up with the rod's sample, no loads': %s",
+          gal_error_message());
+    if (!S) goto done;
+    int n = rod->ndof, r = S->r;
+    gal_rom_hyper_info i0, i1;
+    gal_rom_hyper_get_info(S, &i0);
+    V0 = malloc((size_t)n * r * sizeof(double));
+    if (!V0) goto done;
+    memcpy(V0, S->V, (size_t)n * r * sizeof(double));
+    /* at 12 m/s, on the set-up made at 4 m/s: the model computed there alone */
+    alone = gal_rom_alloc(rod, db->eq.q, &db->md, db->sel, db->basis, &ob, &Fb);
+    ob.setup = S;
+    copy = gal_rom_alloc(rod, db->eq.q, &db->md, db->sel, db->basis, &ob, &Fb);
+    CHECK(alone && copy && !alone->setup_reused && copy->setup_reused && copy->chol0 == S->chol0,
+          "the copy reads the set-up's factorization: %s", gal_error_message());
+    if (!alone || !copy) goto done;
+    CHECK(same_rom(alone, copy), "on the set-up: the model computed alone, bit for bit");
+    CHECK(alone->hyper->loads && copy->hyper->set[1].n > 0, "the loads' sample the wind's own");
+    oa.setup = S;
+    at4 = gal_rom_alloc(rod, da->eq.q, &da->md, da->sel, da->basis, &oa, &Fa);
+    CHECK(at4 && at4->setup_reused && at4->hyper->set[0].n == copy->hyper->set[0].n &&
+          !memcmp(at4->hyper->set[0].w, copy->hyper->set[0].w, (size_t)copy->hyper->set[0].n * sizeof(double)),
+          "the rod's sample does not depend on the wind");
+    /* a run with re-samplings at every check (a tight tolerance): the same states, the set-up intact */
+    alone->o.hyper_check_tol = copy->o.hyper_check_tol = 1e-9;
+    alone->o.hyper_check_interval = copy->o.hyper_check_interval = 0.5;
+    int sa = gal_rom_start(alone, 0, db->q_start, NULL), sc = gal_rom_start(copy, 0, db->q_start, NULL);
+    if (!sa) sa = gal_rom_advance(alone, 2.0);
+    if (!sc) sc = gal_rom_advance(copy, 2.0);
+    CHECK(!sa && !sc, "2 s: %s", gal_error_message());
+    CHECK(alone->hyper->refits > 0 && alone->hyper->refits == copy->hyper->refits, "re-sampled %d times",
+          alone->hyper->refits);
+    CHECK(same_rom(alone, copy), "after 2 s and re-samplings: the same state, bit for bit");
+    gal_rom_hyper_get_info(S, &i1);
+    CHECK(!memcmp(V0, S->V, (size_t)n * r * sizeof(double)) && S->r == r && i1.elements == i0.elements &&
+          i1.snapshots == i0.snapshots && i1.refits == 0 && S->hyper->set[1].n == 0, "the set-up unchanged by the runs");
+    /* other modes: the set-up is not used */
+    other = db->basis > 1 ? gal_rom_alloc(rod, db->eq.q, &db->md, db->sel, db->basis - 1, &ob, &Fb) : NULL;
+    CHECK(db->basis > 1 && other && !other->setup_reused, "a set-up of other modes is not used");
+done:
+    gal_rom_free(other), gal_rom_free(at4), gal_rom_free(copy), gal_rom_free(alone), gal_rom_free(S);
+    free(V0);
+    gal_data_free(db), gal_data_free(da);
+    gal_model_free(a), gal_model_free(b);
+}
+
 int main(void)
 {
     RUN(test_keys);
     RUN(test_share);
+    RUN(test_rom_setup);
     return CHECK_SUMMARY();
 }

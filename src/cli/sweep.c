@@ -109,7 +109,8 @@ static void run_unit(void *ctx, long h)
         }
         free(q), free(v);
         q = q1, v = v1, nq = nq1, prev = fp;
-        gal_par_case_done(S->par, computed ? GAL_PAR_SETUP_COMPUTED + r.setup_reused : 0, computed ? r.setup_time_s : 0);
+        gal_par_case_done(S->par, computed ? (GAL_PAR_SETUP_COMPUTED + r.setup_reused) | r.rom_setup << GAL_PAR_ROM_SHIFT : 0,
+                          computed ? r.setup_time_s : 0);
     }
     free(q), free(v);
 }
@@ -176,9 +177,10 @@ static int finish(sweep *S, long computed, double t0)
     gal_sweep_result *rows = calloc((size_t)S->g.ncases, sizeof *rows);
     if (!rows) return fail("", gal_error(GAL_ENOMEM, "out of memory"));
     gal_sweep_totals t = {S->kind == GAL_MODEL_FULL ? "full" : "reduced", gal_par_size(S->par), computed, 0, 0, 0, 0,
-                          0, 0, 0, 0};
+                          0, 0, 0, 0, 0, 0};
     t.resumed = S->g.ncases - computed;
     gal_par_setups(S->par, &t.setups_computed, &t.setups_reused, &t.damping_computed, &t.setup_time_s);
+    gal_par_rom_setups(S->par, &t.reduced_setups_computed, &t.reduced_setups_reused);
     int st = collect(S, rows, &t.case_time_s, &t.failed);
     gal_scene base;
     if (!st) st = gal_scene_load(&base, S->path, S->user, S->nuser, NULL);

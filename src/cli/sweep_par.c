@@ -29,6 +29,7 @@ struct gal_par {
     long printed;                  /* done at the last progress line */
     long setups, reused, damping;  /* computed cases with their own set-up, with a reused one, that
                                     * built their damping */
+    long rom_setups, rom_reused;   /* reduced cases that computed their own set-up, reused one */
     double setup_time_s;
     int local_done, threaded;
     double t0, last_print;
@@ -113,6 +114,9 @@ static void progress(gal_par *p, int final)
 /* a finished case counted (the lock held) */
 static void count(gal_par *p, int how, double setup_time_s)
 {
+    int rom = how >> GAL_PAR_ROM_SHIFT;
+    how &= (1 << GAL_PAR_ROM_SHIFT) - 1;
+    p->rom_setups += rom == 1, p->rom_reused += rom == 2;
     p->done++, p->computed += how != 0;
     p->setups += how == GAL_PAR_SETUP_COMPUTED, p->reused += how >= GAL_PAR_SETUP_REUSED;
     p->damping += how == GAL_PAR_SETUP_COMPUTED || how == GAL_PAR_SETUP_REUSED_MODES;
@@ -137,6 +141,11 @@ void gal_par_case_done(gal_par *p, int how, double setup_time_s)
 void gal_par_setups(const gal_par *p, long *computed, long *reused, long *damping, double *time_s)
 {
     *computed = p->setups, *reused = p->reused, *damping = p->damping, *time_s = p->setup_time_s;
+}
+
+void gal_par_rom_setups(const gal_par *p, long *computed, long *reused)
+{
+    *computed = p->rom_setups, *reused = p->rom_reused;
 }
 
 /* units from the shared counter until none is left */
@@ -211,7 +220,7 @@ static void worker(gal_par *p)
 void gal_par_run(gal_par *p, long nunits, long ncases, gal_par_unit_fn fn, void *ctx, long *computed)
 {
     p->nunits = nunits, p->ncases = ncases, p->next = 0;
-    p->done = p->computed = p->setups = p->reused = p->damping = 0;
+    p->done = p->computed = p->setups = p->reused = p->damping = p->rom_setups = p->rom_reused = 0;
     p->setup_time_s = 0;
     p->printed = -1;
     p->local_done = 0;

@@ -23,11 +23,16 @@ typedef void (*gal_par_unit_fn)(void *ctx, long unit);
  * the equilibrium and modes but its damping built anew (GAL_PAR_SETUP_REUSED_MODES), or found
  * committed by an earlier run (0); setup_time_s: its set-up's wall time (gal_sweep_result). */
 enum { GAL_PAR_SETUP_COMPUTED = 1, GAL_PAR_SETUP_REUSED = 2, GAL_PAR_SETUP_REUSED_MODES = 3 };
+/* how may carry the reduced model's own set-up above these bits (gal_sweep_result.rom_setup: 1
+ * computed, 2 reused) */
+#define GAL_PAR_ROM_SHIFT 2
 void gal_par_case_done(gal_par *p, int how, double setup_time_s);
 /* Rank 0, after gal_par_run: of the cases computed by all ranks, those that computed their
  * equilibrium and modes, those that reused them, those that built their damping (their own
  * set-up's or anew), and the set-ups' wall time in all (s). */
 void gal_par_setups(const gal_par *p, long *computed, long *reused, long *damping, double *time_s);
+/* Rank 0, after gal_par_run: the reduced model's own set-ups computed and reused by all ranks. */
+void gal_par_rom_setups(const gal_par *p, long *computed, long *reused);
 
 /* Units 0 .. nunits-1 (ncases cases in all) run over every process, each exactly once. Returns,
  * on rank 0, when every unit is finished (the others return when no unit is left for them);

@@ -180,6 +180,8 @@ static void json_summary(gal_json *j, const gal_scene *sc, const gal_sweep_grid 
     gal_json_kv_int(j, "setups_reused", t->setups_reused);
     gal_json_kv_int(j, "damping_computed", t->damping_computed);
     gal_json_kv_num(j, "setup_time_s", t->setup_time_s);
+    gal_json_kv_int(j, "reduced_setups_computed", t->reduced_setups_computed); /* gal_data.rom_setup */
+    gal_json_kv_int(j, "reduced_setups_reused", t->reduced_setups_reused);
     gal_json_key(j, "failures");
     gal_json_arr_begin(j);
     for (long r = 0, n = 0; r < g->ncases && n < MAX_FAILURES; r++)

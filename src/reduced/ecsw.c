@@ -153,17 +153,17 @@ static int add_snapshot(gal_rom_hyper *h, int r, const double *x, const double *
     return GAL_OK;
 }
 
-int gal_rom_hyper_build(gal_rom *m)
+/* m->hyper with its arrays (set 0: the rod's energy, every element's room; set 1: the loads', every
+ * edge's), empty. */
+static int hyper_alloc(gal_rom *m)
 {
     const gal_rod *rod = m->rod;
-    int r = m->r, nel = rod->p.elements, st = GAL_OK;
+    int r = m->r, st = GAL_OK;
     gal_rom_hyper *h = calloc(1, sizeof *h);
     if (!h) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample");
     m->hyper = h;
-    h->loads = m->force.eval && m->force.element && m->o.hyper_loads;
-    h->mirror = mirror_symmetric(m);
     for (int s = 0; s < 2; s++) {
-        int ne = s == 0 ? gal_rod_element_count(rod) : nel;
+        int ne = s == 0 ? gal_rod_element_count(rod) : rod->p.elements;
         h->set[s].elem = malloc((size_t)ne * sizeof(int)), h->set[s].w = malloc((size_t)ne * sizeof(double));
         h->set[s].idx = malloc((size_t)ne * GAL_ROD_ELEMENT_NQ * sizeof(int));
         h->set[s].rw = malloc((size_t)r * sizeof(double));
@@ -172,11 +172,20 @@ int gal_rom_hyper_build(gal_rom *m)
     h->fc = malloc((size_t)r * sizeof(double)), h->Kc = malloc((size_t)r * r * sizeof(double)), h->F0 = malloc((size_t)r * sizeof(double));
     h->gu = malloc((size_t)m->nq * sizeof(double));
     h->T = malloc((size_t)GAL_ROD_ELEMENT_NQ * r * sizeof(double));
-    double *x = malloc((size_t)3 * r * sizeof(double));
-    if (st || !h->gu || !h->T || !h->fc || !h->Kc || !h->F0 || !x) {
-        free(x);
+    if (st || !h->gu || !h->T || !h->fc || !h->Kc || !h->F0)
         return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample (basis %d)", r);
-    }
+    return GAL_OK;
+}
+
+int gal_rom_hyper_build(gal_rom *m)
+{
+    const gal_rod *rod = m->rod;
+    int r = m->r, st = hyper_alloc(m);
+    double *x = st ? NULL : malloc((size_t)3 * r * sizeof(double));
+    if (!st && !x) st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample (basis %d)", r);
+    if (st) return st;
+    gal_rom_hyper *h = m->hyper;
+    h->mirror = mirror_symmetric(m);
     /* the amplitude: the sag below the chord, at least 1% of the span */
     double L = rod->p.length, hd = rod->p.height_difference, sag = 0;
     for (int i = 0; i < rod->nn; i++) {
@@ -190,10 +199,51 @@ int gal_rom_hyper_build(gal_rom *m)
         st = gal_rom_hyper_training_state(m, s, x, x + r);
         if (!st) st = add_snapshot(h, r, x, x + r, 10.0 + 7.3 * s);
     }
-    if (!st) st = resample(m);
+    /* the rod's sample, then the loads' (apart: the first does not depend on the wind) */
+    if (!st) st = gal_rom_hyper_fit(m, 0);
+    if (!st) st = constants(m);
+    if (!st) st = gal_rom_hyper_loads(m);
 done:
     free(x);
     return st;
+}
+
+int gal_rom_hyper_loads(gal_rom *m)
+{
+    gal_rom_hyper *h = m->hyper;
+    h->loads = m->force.eval && m->force.element && m->o.hyper_loads;
+    int st = h->loads ? gal_rom_hyper_fit(m, 1) : GAL_OK;
+    if (!st) st = sample_entries(m);
+    return st;
+}
+
+/* a fresh copy of n doubles (NULL: out of memory) */
+static double *dup(const double *src, size_t n)
+{
+    double *p = malloc((n > 0 ? n : 1) * sizeof(double));
+    if (p && n) memcpy(p, src, n * sizeof(double));
+    return p;
+}
+
+int gal_rom_hyper_copy(gal_rom *m, const gal_rom *from)
+{
+    const gal_rom_hyper *f = from->hyper;
+    int r = m->r, NQ = GAL_ROD_ELEMENT_NQ, st = hyper_alloc(m);
+    if (st) return st;
+    gal_rom_hyper *h = m->hyper;
+    const gal_rom_hyper_set *F = &f->set[0];
+    gal_rom_hyper_set *S = &h->set[0];
+    S->n = F->n, S->fit_error = F->fit_error;
+    memcpy(S->elem, F->elem, (size_t)F->n * sizeof(int)), memcpy(S->w, F->w, (size_t)F->n * sizeof(double));
+    memcpy(S->idx, F->idx, (size_t)F->n * NQ * sizeof(int)), memcpy(S->rw, F->rw, (size_t)r * sizeof(double));
+    memcpy(h->fc, f->fc, (size_t)r * sizeof(double)), memcpy(h->Kc, f->Kc, (size_t)r * r * sizeof(double));
+    memcpy(h->F0, f->F0, (size_t)r * sizeof(double));
+    h->Uc = f->Uc, h->amp = f->amp, h->mirror = f->mirror, h->refits = f->refits, h->check_error = f->check_error;
+    h->train_element_evals = f->train_element_evals, h->train_full_evals = f->train_full_evals;
+    h->ns = h->cap = f->ns;
+    if (f->emax && !(h->emax = dup(f->emax, (size_t)m->nmodes))) st = GAL_ENOMEM;
+    if (!(h->snap = dup(f->snap, (size_t)f->ns * (2 * r + 1)))) st = GAL_ENOMEM;
+    return st ? gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample") : GAL_OK;
 }
 
 /* |rw .* a| */

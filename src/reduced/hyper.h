@@ -56,6 +56,12 @@ int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);
 int gal_rom_hyper_fit(gal_rom *m, int set);
 /* Both fits (the loads' when sampled) from one pass over the training states. */
 int gal_rom_hyper_fit_all(gal_rom *m);
+/* The loads' sample (when m's force has its element split and o.hyper_loads) fitted on the training
+ * states held, and both samples' entries: the part of the sample's build that depends on the wind. */
+int gal_rom_hyper_loads(gal_rom *m);
+/* m's sample of the rod's energy, its constants and training states, copied from `from`'s (of the
+ * same basis; the loads' sample empty: gal_rom_hyper_loads next). */
+int gal_rom_hyper_copy(gal_rom *m, const gal_rom *from);
 /* Element e's gradient at the state in m->q projected on V into col (r), and its Hessian
  * projected, V_e^T H_e V_e (plus the curvature on the manifold), into Kr (r x r). */
 int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr);

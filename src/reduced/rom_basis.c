@@ -12,6 +12,7 @@
 
 #include "base/chol.h"
 #include "gallop/reduced/ecsw.h"
+#include "reduced/hyper.h"
 #include "reduced/qm.h"
 
 void gal_rom_default_opts(gal_rom_opts *o)
@@ -32,12 +33,13 @@ void gal_rom_default_opts(gal_rom_opts *o)
 gal_rom *gal_rom_free(gal_rom *m)
 {
     if (!m) return NULL;
+    if (!m->setup_reused) gal_chol_free(m->chol0); /* else the set-up's */
+    free(m->setup_sel);
     gal_rom_hyper_free(m);
     gal_rom_qm_free(m);
     free(m->fr); free(m->fe_prev);
     free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
     gal_csc_free(m->K0); gal_csc_free(m->K);
-    gal_chol_free(m->chol0);
     free(m->x); free(m->v); free(m->a); free(m->fi); free(m->fe);
     free(m->q); free(m->vq); free(m->gq); free(m->fq); free(m->wn); free(m->wn2);
     free(m->x1); free(m->v1); free(m->a1); free(m->fi1); free(m->fe1); free(m->fdg); free(m->res); free(m->da);
@@ -173,74 +175,161 @@ void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, dou
     }
 }
 
-gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel, int nsel,
-                       const gal_rom_opts *o, const gal_force *force)
+/* The Newton test's force scales: |V^T (node weights in every direction)| and eps L EA/l0 times the
+ * largest column sum of |V|. */
+static void force_scales(gal_rom *m)
 {
-    double t0 = gal_wall_time();
-    if (nsel < 1) { gal_error(GAL_EINPUT, "reduced model: no modes selected"); return NULL; }
-    gal_rom *m = calloc(1, sizeof *m);
-    if (!m) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return NULL; }
-    m->rod = rod, m->ndof = rod->ndof, m->nq = rod->nq, m->nmodes = nsel;
-    if (o) m->o = *o;
-    else gal_rom_default_opts(&m->o);
-    if (force) m->force = *force;
-    int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + (m->o.nextra > 0 ? m->o.nextra : 0);
-    if (m->o.manifold) rmax += 3; /* the static vectors (qm.h) */
-    double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc((size_t)2 * n * sizeof(double));
-    m->omega2 = malloc((size_t)nsel * sizeof(double));
-    if (!MV || !c || !m->omega2 || alloc_state(m, rmax)) goto fail;
-    memcpy(m->q_eq, q_eq, (size_t)m->nq * sizeof(double));
-    if (gal_rod_eval(rod, q_eq, NULL, m->gq, m->K0)) goto fail;
-    if (!(m->chol0 = gal_chol_alloc(rod->K))) goto fail;
-    if (gal_chol_factor(m->chol0, m->K0, 0, NULL)) {
-        gal_error(GAL_EFAIL, "reduced model: the tangent at the equilibrium is not positive definite (%s)", gal_error_message());
-        goto fail;
-    }
-    for (int k = 0; k < nsel; k++) {
-        if (sel[k] < 0 || sel[k] >= md->n) { gal_error(GAL_EINPUT, "reduced model: mode %d not computed", sel[k]); goto fail; }
-        m->omega2[k] = md->mode[sel[k]].omega * md->mode[sel[k]].omega;
-        memcpy(c, md->shape + (size_t)sel[k] * n, (size_t)n * sizeof(double));
-        int r0 = m->r;
-        orth_append(rod, m->V, MV, &m->r, c, c + n, 1e-3);
-        if (m->r == r0) { gal_error(GAL_EFAIL, "reduced model: mode %d repeats the others", sel[k]); goto fail; }
-    }
-    if (m->o.manifold && m->o.nextra > 0) {
-        gal_error(GAL_EINPUT, "reduced model: the quadratic manifold takes no extra basis vectors");
-        goto fail;
-    }
-    if (m->o.manifold && gal_rom_qm_static(m, MV)) goto fail;
-    m->o.mean_load = NULL; /* not owned */
-    if (m->o.derivatives && (m->o.manifold ? gal_rom_qm_build(m) : derivatives(m, MV, nsel))) goto fail;
-    for (int k = 0; k < m->o.nextra; k++) {
-        memcpy(c, m->o.extra + (size_t)k * n, (size_t)n * sizeof(double));
-        orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol);
-    }
-    m->o.extra = NULL; /* not owned: not kept past the build */
-    gal_rom_project_tangent(m, m->K0, m->K0r, c);
-    int r = m->r;
-    memset(m->Cr, 0, (size_t)r * r * sizeof(double));
-    if (m->o.damping && gal_damping_project(m->o.damping, m->V, r, m->Cr)) goto fail; /* symmetric */
-    double rho = m->o.rho_inf;
-    m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
-    m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);
-    /* force scales: |V^T (node weights in every direction)| and eps L EA/l0 times the largest
-     * column sum of |V| */
+    const gal_rod *rod = m->rod;
+    int n = m->ndof;
     double fs = 0, cs = 0;
-    for (int k = 0; k < r; k++) {
+    for (int k = 0; k < m->r; k++) {
         double p = 0, s = 0;
         for (int d = 0; d < n; d++) p += m->V[(size_t)k * n + d] * rod->mdiag[d] * 9.81, s += fabs(m->V[(size_t)k * n + d]);
         fs += p * p, cs = fmax(cs, s);
     }
     m->fscale = sqrt(fs);
     m->ffloor = 20 * 2.2e-16 * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0] * cs;
-    free(MV); free(c);
+}
+
+/* The set-up that does not depend on the loads, the damping or the step (m->rod, m->o filled;
+ * m->force empty): K0 and its factorization, the basis, V^T K0 V, the force scales and the rod's
+ * sample. */
+static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, const int *sel, int nsel)
+{
+    const gal_rod *rod = m->rod;
+    int st = GAL_OK;
+    m->ndof = rod->ndof, m->nq = rod->nq, m->nmodes = nsel;
+    int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + (m->o.nextra > 0 ? m->o.nextra : 0);
+    if (m->o.manifold) rmax += 3; /* the static vectors (qm.h) */
+    double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc((size_t)2 * n * sizeof(double));
+    m->omega2 = malloc((size_t)nsel * sizeof(double)), m->setup_sel = malloc((size_t)nsel * sizeof(int));
+    if (!MV || !c || !m->omega2 || !m->setup_sel) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    if (!st) st = alloc_state(m, rmax);
+    if (st) goto done;
+    m->setup_shape = md->shape, m->setup_nsel = nsel;
+    memcpy(m->setup_sel, sel, (size_t)nsel * sizeof(int));
+    memcpy(m->q_eq, q_eq, (size_t)m->nq * sizeof(double));
+    if ((st = gal_rod_eval(rod, q_eq, NULL, m->gq, m->K0))) goto done;
+    if (!(m->chol0 = gal_chol_alloc(rod->K))) { st = GAL_ENOMEM; goto done; }
+    if (gal_chol_factor(m->chol0, m->K0, 0, NULL)) {
+        st = gal_error(GAL_EFAIL, "reduced model: the tangent at the equilibrium is not positive definite (%s)", gal_error_message());
+        goto done;
+    }
+    for (int k = 0; k < nsel; k++) {
+        if (sel[k] < 0 || sel[k] >= md->n) { st = gal_error(GAL_EINPUT, "reduced model: mode %d not computed", sel[k]); goto done; }
+        m->omega2[k] = md->mode[sel[k]].omega * md->mode[sel[k]].omega;
+        memcpy(c, md->shape + (size_t)sel[k] * n, (size_t)n * sizeof(double));
+        int r0 = m->r;
+        orth_append(rod, m->V, MV, &m->r, c, c + n, 1e-3);
+        if (m->r == r0) { st = gal_error(GAL_EFAIL, "reduced model: mode %d repeats the others", sel[k]); goto done; }
+    }
+    if (m->o.manifold && m->o.nextra > 0) {
+        st = gal_error(GAL_EINPUT, "reduced model: the quadratic manifold takes no extra basis vectors");
+        goto done;
+    }
+    if (m->o.manifold && (st = gal_rom_qm_static(m, MV))) goto done;
+    m->o.mean_load = NULL; /* not owned */
+    if (m->o.derivatives && (st = m->o.manifold ? gal_rom_qm_build(m) : derivatives(m, MV, nsel))) goto done;
+    for (int k = 0; k < m->o.nextra; k++) {
+        memcpy(c, m->o.extra + (size_t)k * n, (size_t)n * sizeof(double));
+        orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol);
+    }
+    m->o.extra = NULL; /* not owned: not kept past the build */
+    gal_rom_project_tangent(m, m->K0, m->K0r, c);
+    force_scales(m);
     /* the sample (ecsw.h); a rod with a term that has no element split (an equivalent bundle's
      * differential-stretch fields, src/rod/bundle_irvine.c) is projected exactly */
-    if (m->o.hyper && gal_rod_element_form(rod) && gal_rom_hyper_build(m)) return gal_rom_free(m);
-    if (gal_rom_start(m, 0.0, q_eq, NULL)) return gal_rom_free(m);
-    m->build_time_s = gal_wall_time() - t0;
-    return m;
-fail:
+    if (m->o.hyper && gal_rod_element_form(rod)) st = gal_rom_hyper_build(m);
+done:
     free(MV); free(c);
-    return gal_rom_free(m);
+    return st;
+}
+
+/* The rest of the model on its set-up: the options o (the set-up's kept), the loads, the damping
+ * Cr = V^T C V, the step's constants, the loads' sample, and the start at rest at q_eq. */
+static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, double t0)
+{
+    gal_rom_opts keep = m->o;
+    if (o) m->o = *o;
+    m->o.mean_load = NULL, m->o.extra = NULL, m->o.nextra = keep.nextra, m->o.setup = NULL;
+    if (force) m->force = *force;
+    int r = m->r, st = GAL_OK;
+    memset(m->Cr, 0, (size_t)r * r * sizeof(double));
+    if (m->o.damping && (st = gal_damping_project(m->o.damping, m->V, r, m->Cr))) return st; /* symmetric */
+    double rho = m->o.rho_inf;
+    m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
+    m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);
+    if (m->hyper && (st = gal_rom_hyper_loads(m))) return st;
+    if ((st = gal_rom_start(m, 0.0, m->q_eq, NULL))) return st;
+    m->build_time_s = gal_wall_time() - t0;
+    return GAL_OK;
+}
+
+/* Whether the set-up s is the one gal_rom_alloc would compute for these arguments. */
+static int setup_matches(const gal_rom *s, const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel,
+                         int nsel, const gal_rom_opts *o)
+{
+    const gal_rom_opts *a = &s->o;
+    for (int k = 0; k < nsel && s->setup_shape == md->shape && s->setup_nsel == nsel; k++)
+        if (sel[k] < 0 || sel[k] >= md->n || s->omega2[k] != md->mode[sel[k]].omega * md->mode[sel[k]].omega) return 0;
+    return s->rod == rod && s->setup_shape == md->shape && s->setup_nsel == nsel && !s->qm && !o->manifold &&
+           !memcmp(s->setup_sel, sel, (size_t)nsel * sizeof(int)) && o->nextra <= 0 && a->nextra <= 0 &&
+           !memcmp(s->q_eq, q_eq, (size_t)rod->nq * sizeof(double)) && a->derivatives == o->derivatives &&
+           a->deflation_tol == o->deflation_tol && a->fd_step_m == o->fd_step_m && a->hyper == o->hyper &&
+           a->hyper_tol == o->hyper_tol && a->hyper_twist == o->hyper_twist && a->hyper_snapshots == o->hyper_snapshots;
+}
+
+/* A model on a copy of the set-up s (its factorization of K0 borrowed), not finished. */
+static gal_rom *copy_setup(const gal_rom *s)
+{
+    gal_rom *m = calloc(1, sizeof *m);
+    if (!m) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return NULL; }
+    m->rod = s->rod, m->o = s->o, m->ndof = s->ndof, m->nq = s->nq, m->r = s->r, m->nmodes = s->nmodes;
+    m->fscale = s->fscale, m->ffloor = s->ffloor, m->ufloor = s->ufloor;
+    m->setup_shape = s->setup_shape, m->setup_nsel = s->setup_nsel;
+    int n = m->ndof, r = m->r, st = alloc_state(m, r);
+    m->omega2 = malloc((size_t)m->nmodes * sizeof(double)), m->setup_sel = malloc((size_t)s->setup_nsel * sizeof(int));
+    if (!st && (!m->omega2 || !m->setup_sel)) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    if (!st) {
+        memcpy(m->V, s->V, (size_t)n * r * sizeof(double)), memcpy(m->K0r, s->K0r, (size_t)r * r * sizeof(double));
+        memcpy(m->q_eq, s->q_eq, (size_t)m->nq * sizeof(double));
+        memcpy(m->omega2, s->omega2, (size_t)m->nmodes * sizeof(double));
+        memcpy(m->setup_sel, s->setup_sel, (size_t)s->setup_nsel * sizeof(int));
+        memcpy(m->K0->val, s->K0->val, (size_t)s->K0->colptr[s->K0->n] * sizeof(double));
+        m->chol0 = s->chol0, m->setup_reused = 1;
+        if (s->hyper) st = gal_rom_hyper_copy(m, s);
+    }
+    return st ? gal_rom_free(m) : m;
+}
+
+gal_rom *gal_rom_setup_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel, int nsel,
+                             const gal_rom_opts *o)
+{
+    if (nsel < 1) { gal_error(GAL_EINPUT, "reduced model: no modes selected"); return NULL; }
+    if (o && o->manifold) { gal_error(GAL_EINPUT, "reduced model: the quadratic manifold has no shared set-up"); return NULL; }
+    gal_rom *m = calloc(1, sizeof *m);
+    if (!m) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return NULL; }
+    m->rod = rod;
+    if (o) m->o = *o;
+    else gal_rom_default_opts(&m->o);
+    m->o.setup = NULL, m->o.damping = NULL;
+    return build_setup(m, q_eq, md, sel, nsel) ? gal_rom_free(m) : m;
+}
+
+gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel, int nsel,
+                       const gal_rom_opts *o, const gal_force *force)
+{
+    double t0 = gal_wall_time();
+    if (nsel < 1) { gal_error(GAL_EINPUT, "reduced model: no modes selected"); return NULL; }
+    gal_rom_opts od;
+    if (!o) gal_rom_default_opts(&od), o = &od;
+    gal_rom *m = NULL;
+    if (o->setup && setup_matches(o->setup, rod, q_eq, md, sel, nsel, o)) {
+        if (!(m = copy_setup(o->setup))) return NULL;
+    } else {
+        if (!(m = calloc(1, sizeof *m))) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return NULL; }
+        m->rod = rod, m->o = *o;
+        if (build_setup(m, q_eq, md, sel, nsel)) return gal_rom_free(m);
+    }
+    return finish(m, o, force, t0) ? gal_rom_free(m) : m;
 }

@@ -3,6 +3,7 @@
 #include "gallop/base/core.h"
 #include "gallop/loads/windfield.h"
 #include "gallop/model/damping.h"
+#include "gallop/reduced/rom.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -18,6 +19,11 @@ gal_data *gal_data_alloc(const gal_model *m)
         return NULL;
     }
     d->model = m;
+    if (!(d->rom_setup = calloc(1, sizeof *d->rom_setup))) {
+        gal_error(GAL_ENOMEM, "out of memory for the data of %s", m->sc.path);
+        free(d);
+        return NULL;
+    }
     return d;
 }
 
@@ -25,7 +31,11 @@ gal_data *gal_data_free(gal_data *d)
 {
     if (d) {
         if (d->borrowed < GAL_STAGE_EQUILIBRIUM) gal_equilibrium_clear(&d->eq);
-        if (d->borrowed < GAL_STAGE_MODES) gal_modes_clear(&d->md);
+        if (d->borrowed < GAL_STAGE_MODES) {
+            gal_modes_clear(&d->md);
+            if (d->rom_setup) gal_rom_free(d->rom_setup->rom);
+            free(d->rom_setup);
+        }
         if (!d->damping_borrowed) gal_damping_free(d->damping);
         free(d->wind_u);
         free(d->q_start);

@@ -1,9 +1,12 @@
 /* forward_share.c: the set-up of one model's data reused by another's (forward.h): the key of
  * what the equilibrium and modes stages read, and the stages borrowed from a data of the same key
- * (a sweep over the wind finds its span's equilibrium and modes once). */
+ * (a sweep over the wind finds its span's equilibrium and modes once, and the reduced model's own
+ * set-up on them: gal_data.rom_setup). */
 #include "gallop/run/forward.h"
 #include "gallop/base/core.h"
+#include "gallop/reduced/rom.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 /* The rod's parameters, hashed field by field (no padding bytes); a field added to gal_rod_params
@@ -68,6 +71,9 @@ int gal_data_share(const gal_model *m, gal_data *d, const gal_data *from, gal_st
     d->stage = GAL_STAGE_EQUILIBRIUM;
     if (upto < GAL_STAGE_MODES) return GAL_OK;
     d->md = from->md;
+    gal_rom_free(d->rom_setup->rom); /* none yet: d is not forwarded */
+    free(d->rom_setup);
+    d->rom_setup = from->rom_setup; /* the reduced set-up on these modes */
     d->borrowed = GAL_STAGE_MODES;
     if (m->damping_ratio == from->model->damping_ratio) {
         d->damping = from->damping;

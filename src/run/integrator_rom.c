@@ -33,6 +33,8 @@ typedef struct {
     int warn, checks, valid;
     double residual_max;
     gal_rom_check worst;
+    int setup_reused;       /* the wind-independent set-up was the data's (an earlier run's) */
+    double setup_time_s;    /* s: that set-up's wall time when this run made it */
 } rom_state;
 
 static void rom_free(void *state)
@@ -43,6 +45,23 @@ static void rom_free(void *state)
     gal_rom_adapt_clear(&s->adapt);
     free(s->du);
     free(s);
+}
+
+/* The data's wind-independent set-up of the reduced model into ro->setup: made now (and kept by
+ * the data) when it has none, else an earlier run's (s->setup_reused). */
+static int setup_of(const gal_data *d, gal_rom_opts *ro, rom_state *s)
+{
+    gal_rom_setup_slot *slot = d->rom_setup;
+    if (!slot || ro->manifold) return GAL_OK;
+    s->setup_reused = slot->rom != NULL;
+    if (!slot->rom) {
+        double t0 = gal_wall_time();
+        slot->rom = gal_rom_setup_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, ro);
+        if (!slot->rom) return GAL_EFAIL;
+        s->setup_time_s = slot->time_s = gal_wall_time() - t0;
+    }
+    ro->setup = slot->rom;
+    return GAL_OK;
 }
 
 static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *o, double dt_out, double fhi,
@@ -67,6 +86,10 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     s->tol = m->sc.model.residual_tolerance;
     s->warn = m->sc.model.on_invalid_warn;
     s->valid = 1;
+    if ((st = setup_of(d, &ro, s))) {
+        rom_free(s);
+        return st;
+    }
     if ((st = gal_rom_adapt_init(&s->adapt, &s->rom, d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F)) ||
         !(s->du = malloc((size_t)d->eq.rod->ndof * sizeof(double)))) {
         if (!st) st = gal_error(GAL_ENOMEM, "simulate: out of memory");
@@ -74,6 +97,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
         return st;
     }
     s->basis_start = s->rom->r;
+    s->setup_reused = s->setup_reused && s->rom->setup_reused;
     if ((st = gal_rom_start(s->rom, 0.0, d->q_start, d->v_start))) {
         rom_free(s);
         return st;
@@ -145,7 +169,8 @@ static void rom_counters(const void *state, gal_run_counters *c)
     c->steps = r->steps, c->newton_iterations = r->newton_iterations, c->factorizations = r->tangents;
     c->force_evaluations = r->force_evaluations;
     c->basis = r->r;
-    c->build_time_s = r->build_time_s;
+    c->build_time_s = r->build_time_s + s->setup_time_s;
+    c->setup_reused = s->setup_reused;
     c->checked = s->checks > 0, c->residual_max = s->residual_max, c->valid = s->valid;
     c->basis_start = s->basis_start, c->growths = s->adapt.nevents;
     memcpy(c->growth, s->adapt.ev, sizeof s->adapt.ev);

@@ -120,7 +120,7 @@ int gal_run_to_state(const gal_model *m, gal_data *d, const gal_integrator_type 
     res->time_step_s = c.time_step_s;
     res->steps = c.steps, res->newton_iterations = c.newton_iterations, res->factorizations = c.factorizations;
     res->force_evaluations = c.force_evaluations, res->rejected_steps = c.rejected_steps;
-    res->basis = c.basis, res->build_time_s = c.build_time_s;
+    res->basis = c.basis, res->build_time_s = c.build_time_s, res->setup_reused = c.setup_reused;
     res->checked = c.checked, res->residual_max = c.residual_max, res->valid = c.valid;
     res->basis_start = c.basis_start, res->growths = c.growths;
     memcpy(res->growth, c.growth, sizeof c.growth);

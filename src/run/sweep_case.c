@@ -3,7 +3,8 @@
  * from a given state (gal_data_start_from); the measures at the first probe; the coupled onset
  * about the mean-wind equilibrium as `gallop stability` finds it (analysis/onset.h), once per
  * span and process; the equilibrium and modes kept from case to case while their key holds
- * (gal_sweep_setup_cache). An explicit bundle runs its full model and its coupled onset (bundle_dyn.h),
+ * (gal_sweep_setup_cache), and with them the reduced model's own wind-independent set-up
+ * (gal_data.rom_setup). An explicit bundle runs its full model and its coupled onset (bundle_dyn.h),
  * with each sub-conductor's measures. */
 #include "gallop/run/sweep.h"
 #include "gallop/analysis/measure.h"
@@ -217,6 +218,7 @@ static int run_case(const gal_scene *sc, gal_model_kind kind, const double *q0, 
     if (!st) measures_of(&ms, &res, r);
     for (int s = GAL_STAGE_EQUILIBRIUM; d && s <= GAL_STAGE_START; s++) r->setup_time_s += d->stage_time_s[s];
     r->setup_time_s += res.build_time_s;
+    if (!st && kind == GAL_MODEL_REDUCED) r->rom_setup = res.setup_reused ? 2 : 1;
     gal_sim_result_clear(&res);
     setup_keep(setup, m, d, key, r->setup_reused);
     return st;

@@ -44,6 +44,9 @@ typedef struct gal_sweep_totals {
     long damping_computed;           /* ... that built their structural damping (own set-up, or
                                       * another damping ratio than the set-up they reused) */
     double setup_time_s;             /* this run's set-ups' wall time in all */
+    long reduced_setups_computed, reduced_setups_reused; /* this run's reduced cases: the reduced
+                                      * model's own wind-independent set-up computed, or another
+                                      * case's of the same span */
 } gal_sweep_totals;
 
 /* DIR/sweep.csv (one row per case, in row order) and DIR/summary.json (the grid, the totals, per

@@ -80,6 +80,10 @@ typedef struct gal_rom_opts {
     const double *extra;    /* ndof x nextra, column-major: vectors appended after the modal
                              * derivatives (the adaptation's corrections, rom_adapt.h); not owned */
     int nextra;
+    const struct gal_rom *setup; /* a wind-independent set-up (gal_rom_setup_alloc) of the same rod,
+                             * equilibrium, modes and selection: copied instead of computed when it
+                             * matches (gal_rom_alloc); its factorization of K0 is read by the model,
+                             * so it must outlive it; not owned, not kept; NULL: computed */
 } gal_rom_opts;
 
 /* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'
@@ -138,6 +142,10 @@ typedef struct gal_rom {
                              * checks (gal_rom_hyper_check): O(mesh) each, every
                              * o.hyper_check_interval */
     double build_time_s;
+    int setup_reused;       /* 1: the wind-independent set-up was copied from o.setup (chol0 is its) */
+    const double *setup_shape; /* the modes (their shapes, not owned) and selection the basis was
+                             * built from */
+    int setup_nsel, *setup_sel;
     struct gal_rom_hyper *hyper; /* the sample (ecsw.h), or NULL: every element */
     struct gal_rom_qm *qm;  /* o.manifold: the quadratic term (r = nmodes, V = Phi), else NULL */
     double next_hyper_check; /* s */
@@ -155,6 +163,15 @@ void gal_rom_default_opts(gal_rom_opts *o);
 gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel, int nsel,
                        const gal_rom_opts *o, const gal_force *force);
 gal_rom *gal_rom_free(gal_rom *m);
+
+/* The part of gal_rom_alloc that does not depend on the loads, the damping or the time step (a
+ * sweep over the wind on one span computes it once): the basis (the modes and their modal
+ * derivatives), the factorization of K0, V^T K0 V and the internal force's sample (ecsw.h) with its
+ * constants; not a model to run: give it to gal_rom_alloc as o.setup, which copies it and adds
+ * the loads' sample, the damping and the start (bit for bit the model gal_rom_alloc computes
+ * alone). The quadratic manifold (o.manifold) has no such set-up: NULL with a message. */
+gal_rom *gal_rom_setup_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *md, const int *sel, int nsel,
+                             const gal_rom_opts *o);
 
 /* Start at time t from the full state (q, v) (v may be NULL: at rest), projected on the basis:
  * x = V^T M (q - q_eq). */

@@ -44,6 +44,13 @@ extern const char *const gal_stage_names[GAL_STAGE_COUNT];
 #define GAL_MODE_FLOOR_HZ 0.01 /* Hz: a selected mode below this is a rigid or free-twist motion, refused
                                 * by the reduced stage */
 
+/* The holder of a data's reduced set-up (NULL rom: none yet); a pointer in gal_data, so that a
+ * run on a const data can fill it. */
+typedef struct gal_rom_setup_slot {
+    struct gal_rom *rom;
+    double time_s;           /* s: its wall time */
+} gal_rom_setup_slot;
+
 /* Everything the stages find or change (the model holds what they read). */
 typedef struct gal_data {
     const gal_model *model;  /* the model the data were made for */
@@ -70,6 +77,11 @@ typedef struct gal_data {
      * GAL_STAGE_NONE: all its own */
     gal_stage borrowed;
     int damping_borrowed;    /* 1: damping is the other data's too */
+    /* the reduced model's own wind-independent set-up (reduced/rom.h gal_rom_setup_alloc), made
+     * by the first reduced run on these modes and copied by the later ones, the data's and those
+     * of the data that borrow its modes (a sweep over the wind: once per span); owned by the data
+     * that made its modes */
+    gal_rom_setup_slot *rom_setup;
 } gal_data;
 
 gal_data *gal_data_alloc(const gal_model *m);

@@ -34,6 +34,8 @@ typedef struct gal_run_counters {
     long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
     int basis;               /* reduced: basis size (modes and modal derivatives) */
     double build_time_s;     /* reduced: the model's own set-up (basis, after statics and modes) */
+    int setup_reused;        /* reduced: its wind-independent set-up was an earlier run's
+                              * (gal_data.rom_setup: a sweep over the wind) */
     int checked;             /* reduced: its self-check ran (then the two below) */
     double residual_max;     /* the largest relative residual it found */
     int valid;               /* 1: residual_max within model.residual_tolerance */

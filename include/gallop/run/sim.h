@@ -25,6 +25,7 @@ typedef struct gal_sim_result {
     double *tension;               /* nsamples x 2: left and right support tensions (N) */
     double wall_time_s;            /* integration */
     double build_time_s;           /* reduced: the model's own set-up (its basis) */
+    int setup_reused;              /* reduced: its wind-independent part an earlier run's */
     double time_step_s;            /* s: the step */
     long steps, newton_iterations, factorizations, force_evaluations, rejected_steps;
     int basis;                     /* reduced: basis size (modes and modal derivatives) */

@@ -93,6 +93,9 @@ typedef struct gal_sweep_result {
     int setup_reused;                  /* 1: the equilibrium, modes and damping were another
                                         * case's (gal_sweep_setup_cache); 2: the equilibrium and
                                         * modes, the damping built anew (another ratio); 0: none */
+    int rom_setup;                     /* the reduced model's own wind-independent set-up
+                                        * (gal_data.rom_setup): 1 computed by this case, 2 an
+                                        * earlier case's of the span; 0: none (full model) */
     double setup_time_s;               /* the pipeline's stages to the start and the reduced
                                         * model's own set-up (s) */
     /* an explicit bundle ([bundle] model = explicit): the figures above are its centroid's (twist:
