@@ -254,9 +254,11 @@ static int columns(gal_rom *m, train_set *T, int nt)
             if (!(Kl = malloc((size_t)r * r * sizeof(double)))) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
             st = linear_part(m, Kl);
         }
+    int loads = 0; /* the velocity is the loads' alone */
+    for (int i = 0; i < nt; i++) loads |= T[i].set == 1;
     for (int s = 0; s < h->ns && !st; s++) {
         const double *x = h->snap + (size_t)s * (2 * r + 1), *v = x + r, t = x[2 * r];
-        gal_rom_reconstruct_at(m, x, v);
+        gal_rom_reconstruct_at(m, x, loads ? v : NULL);
         const double *B = gal_rom_basis_at(m, x);
         for (int i = 0; i < nt && !st; i++)
             for (int c = 0; c < T[i].nc && !st; c++) {

@@ -2,7 +2,8 @@
  * static modal derivatives theta_ij = -K0^-1 (dK/d eta_j) phi_i, the directional derivative of the
  * tangent by central differences of gal_rod_eval's tangent along phi_j and one factorization of
  * K0; then M-orthonormalized (modified Gram-Schmidt, twice) and deflated. Also the model's
- * allocation and its reduced matrices. */
+ * allocation: its wind-independent set-up (gal_rom_setup_alloc), copied for another wind, then
+ * the rest (the loads' sample, the damping, the start); and its reduced matrices. */
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
 

@@ -2,7 +2,8 @@
  * the mesh: on one span (default tests/rom/drake_200_level_dshape.ini) at 100, 400 and 1000
  * elements, the reduced model's own set-up (gal_rom_alloc, after statics and modes), its cost
  * per step and per simulated second, against the full model's on the same set-up and wind.
- * CPU time of this process (the machine is shared), medians of 3 (the set-up: of 7 builds). Usage:
+ * CPU time of this process (the machine is shared; the BLAS on one thread, as in the command line,
+ * src/cli/blas.c), medians of 3 (the set-up: of 7 builds). Usage:
  *   bench_rom_scale [--seconds S] [--set key=value]... [SCENE]
  * Prints one ROW| line per mesh and BENCH| lines (make bench). */
 #include <math.h>
@@ -16,6 +17,8 @@
 #include "gallop/reduced/ecsw.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
+
+void openblas_set_num_threads(int n) __attribute__((weak));
 
 static double cpu(void)
 {
@@ -133,6 +136,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--manifold") && i + 1 < argc) manifold = atoi(argv[++i]);
         else scene = argv[i];
     }
+    if (openblas_set_num_threads) openblas_set_num_threads(1);
     int mesh[3] = {100, 400, 1000};
     row rw[3];
     for (int k = 0; k < 3; k++)

@@ -1,11 +1,13 @@
 /* bench_sweep_setup.c: the set-up of a sweep over the wind done once (issue 13; run/sweep.h
  * gal_sweep_setup_cache): iced_gallop's 10 speeds 2..20 m/s, 10 s of the reduced model each, at
  * 80 (the scene's) and 400 elements, run case by case in this process as `gallop sweep` runs them,
- * each case with its own set-up (as before the cache) and with the span's equilibrium and modes
- * kept between cases, alternately, REPEATS times: the CPU time of the 10 cases and the median set-up
+ * each case with its own set-up (as before the cache) and with the span's equilibrium, modes and
+ * the reduced model's own wind-independent set-up (gal_data.rom_setup) kept between cases, alternately, REPEATS times: the CPU time of the 10 cases and the median set-up
  * time of a case (the pipeline to the start and the reduced model's own set-up, wall), medians of
  * the repeats. The onset (once per span either way) is computed before the timing. */
 #include "bench_util.h"
+
+void openblas_set_num_threads(int n) __attribute__((weak));
 
 #define REPEATS 5
 #define NSPEEDS 10
@@ -42,6 +44,7 @@ static int sweep(int elements, gal_sweep_onset_cache *onset, gal_sweep_setup_cac
 int main(void)
 {
     static const int ne[2] = {80, 400};
+    if (openblas_set_num_threads) openblas_set_num_threads(1);
     for (int k = 0; k < 2; k++) {
         gal_sweep_onset_cache onset;
         memset(&onset, 0, sizeof onset);
