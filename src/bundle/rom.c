@@ -43,33 +43,56 @@ gal_bundle_rom *gal_bundle_rom_free(gal_bundle_rom *m)
     return NULL;
 }
 
-/* Y (r x k) = V^T X (X: ndof x k), or X = V Y (trans "N"): k <= 2 vectors in one pass over V,
- * column-major. (Plain loops: the BLAS would start its threads on these sizes, in the library.) */
+/* Y (r x k) = V^T X (X: ndof x k), or Y = V X (trans "N"), column-major. Each column's sum runs
+ * over the dofs (T) or the basis (N) in order, as a plain loop would; the loops only take several
+ * columns of V at once, so that the sums are independent (T: 8 at a time) or each entry of Y is
+ * loaded and stored once per 4 columns (N). (Not the BLAS: it would start its threads on these
+ * sizes, in the library, and sum in another order.) */
 static void multi(const gal_bundle_rom *m, const char *trans, int k, const double *X, double *Y)
 {
     int n = m->ndof, r = m->r;
+    const double *V = m->V;
     if (trans[0] == 'T') {
-        for (int c = 0; c < r; c++) {
-            const double *v = m->V + (size_t)c * n, *x0 = X, *x1 = X + n;
-            double s0 = 0, s1 = 0;
-            if (k == 2)
-                for (int j = 0; j < n; j++) s0 += v[j] * x0[j], s1 += v[j] * x1[j];
-            else
-                for (int j = 0; j < n; j++) s0 += v[j] * x0[j];
-            Y[c] = s0;
-            if (k == 2) Y[r + c] = s1;
+        for (int kk = 0; kk < k; kk++) {
+            const double *x = X + (size_t)kk * n;
+            double *y = Y + (size_t)kk * r;
+            int c = 0;
+            for (; c + 8 <= r; c += 8) {
+                const double *v = V + (size_t)c * n;
+                const double *v1 = v + n, *v2 = v1 + n, *v3 = v2 + n, *v4 = v3 + n, *v5 = v4 + n, *v6 = v5 + n,
+                             *v7 = v6 + n;
+                double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
+                for (int j = 0; j < n; j++) {
+                    double xj = x[j];
+                    s0 += v[j] * xj, s1 += v1[j] * xj, s2 += v2[j] * xj, s3 += v3[j] * xj;
+                    s4 += v4[j] * xj, s5 += v5[j] * xj, s6 += v6[j] * xj, s7 += v7[j] * xj;
+                }
+                y[c] = s0, y[c + 1] = s1, y[c + 2] = s2, y[c + 3] = s3;
+                y[c + 4] = s4, y[c + 5] = s5, y[c + 6] = s6, y[c + 7] = s7;
+            }
+            for (; c < r; c++) {
+                const double *v = V + (size_t)c * n;
+                double s0 = 0;
+                for (int j = 0; j < n; j++) s0 += v[j] * x[j];
+                y[c] = s0;
+            }
         }
         return;
     }
     memset(Y, 0, (size_t)k * n * sizeof(double));
-    for (int c = 0; c < r; c++) {
-        const double *v = m->V + (size_t)c * n;
-        double a0 = X[c], a1 = k == 2 ? X[r + c] : 0;
-        double *y0 = Y, *y1 = Y + n;
-        if (k == 2)
-            for (int j = 0; j < n; j++) y0[j] += a0 * v[j], y1[j] += a1 * v[j];
-        else
-            for (int j = 0; j < n; j++) y0[j] += a0 * v[j];
+    for (int kk = 0; kk < k; kk++) {
+        const double *a = X + (size_t)kk * r;
+        double *y = Y + (size_t)kk * n;
+        int c = 0;
+        for (; c + 4 <= r; c += 4) {
+            const double *v0 = V + (size_t)c * n, *v1 = v0 + n, *v2 = v1 + n, *v3 = v2 + n;
+            double a0 = a[c], a1 = a[c + 1], a2 = a[c + 2], a3 = a[c + 3];
+            for (int j = 0; j < n; j++) y[j] = (((y[j] + a0 * v0[j]) + a1 * v1[j]) + a2 * v2[j]) + a3 * v3[j];
+        }
+        for (; c < r; c++) {
+            const double *v = V + (size_t)c * n;
+            for (int j = 0; j < n; j++) y[j] += a[c] * v[j];
+        }
     }
 }
 
@@ -160,10 +183,9 @@ int gal_bundle_rom_acceleration(gal_bundle_rom *m, const double *s, const double
                                 const double *fe, double *a)
 {
     int r = m->r;
-    for (int c = 0; c < r; c++) {
-        memset(m->dx, 0, (size_t)r * sizeof(double));
-        m->dx[c] = 1;
-        mass_mult(m, s, m->dx, m->res);
+    for (int c = 0; c < r; c++) { /* V e_c is V's column c, exactly */
+        gal_bundle_mass_mult(m->b, s, m->V + (size_t)c * m->ndof, m->g, m->wrk);
+        gal_bundle_rom_project(m, m->g, m->res);
         for (int k = 0; k < r; k++) m->tmpr[k * r + c] = m->res[k];
     }
     if (gal_dense_lu_factor(m->tmpr, r, m->piv2)) return gal_error(GAL_EFAIL, "bundle reduced model: singular reduced mass");
