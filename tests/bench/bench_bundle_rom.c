@@ -3,8 +3,9 @@
  * process, alternated, CPU time of the integration (set-up excluded from both, the reduced model's
  * own basis included, as `gallop compare` reports its speedup); the ratio full/reduced per repeat
  * and its median, the counters, and the centroid's mid-span errors. Usage: bench_bundle_rom
- * [--seconds S] [--reps N] [--set key=value]... [SCENE] (default 60 s, 3 repeats, the quad; the twin
- * with --set bundle.subconductors=2). Prints ROW| and BENCH| lines (make bench). */
+ * [--seconds S] [--reps N] [--set key=value]... [SCENE] (default 60 s, 3 repeats, the quad and the
+ * same scene with bundle.subconductors = 2; a scene or --set: that case alone). Prints ROW| and BENCH|
+ * lines (make bench). */
 #include "bench_util.h"
 
 #include "gallop/bundle/bundle_rom.h"
@@ -44,23 +45,9 @@ static int run(const char *path, const char *const *ov, int nov, int reduced, on
     return st;
 }
 
-int main(int argc, char **argv)
+/* Both models on one scene, alternated reps times: ROW| lines and one BENCH| line named by tag. */
+static int bench_case(const char *path, const char *const *ov, int nov, double T, int reps, const char *tag)
 {
-    double T = 60;
-    int reps = 3, nov = 0;
-    const char *ov[40], *path = "data/scenes/quad_bundle_gallop.ini";
-    static char dur[64];
-    ov[nov++] = "bundle.model=explicit";
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--seconds") && i + 1 < argc) T = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
-        else if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 36) ov[nov++] = argv[++i];
-        else path = argv[i];
-    }
-    if (reps < 1 || reps > 15) reps = 3;
-    snprintf(dur, sizeof dur, "simulation.duration=%g", T);
-    ov[nov++] = dur;
-    if (openblas_set_num_threads) openblas_set_num_threads(1);
     double ratio[16], tf[16], tr[16];
     one_run F, R;
     memset(&F, 0, sizeof F), memset(&R, 0, sizeof R);
@@ -70,19 +57,40 @@ int main(int argc, char **argv)
             return 1;
         }
         tf[k] = F.cpu, tr[k] = R.cpu, ratio[k] = F.cpu / R.cpu;
-        printf("ROW| rep %d | full %.3f s | reduced %.3f s | full/reduced %.2f\n", k, F.cpu, R.cpu, ratio[k]);
+        printf("ROW| %s rep %d | full %.3f s | reduced %.3f s | full/reduced %.2f\n", tag, k, F.cpu, R.cpu, ratio[k]);
     }
     double mr = bench_median(ratio, reps), mf = bench_median(tf, reps), mre = bench_median(tr, reps);
     printf("ROW| %s, %g s: full %ld steps %ld Newton %ld tangents %ld evaluations; reduced (basis %ld) %ld steps "
-           "%ld Newton %ld tangents %ld evaluations\n", path, T, F.steps, F.newton, F.tangents, F.evals, R.basis,
+           "%ld Newton %ld tangents %ld evaluations\n", tag, T, F.steps, F.newton, F.tangents, F.evals, R.basis,
            R.steps, R.newton, R.tangents, R.evals);
     const char *nm[3] = {"vertical", "horizontal", "rotation"};
     for (int k = 0; k < 3; k++)
-        printf("ROW| centroid %s p-p: full %.6g, reduced %.6g, error %.3g%%\n", nm[k], F.pp[k], R.pp[k],
+        printf("ROW| %s centroid %s p-p: full %.6g, reduced %.6g, error %.3g%%\n", tag, nm[k], F.pp[k], R.pp[k],
                100 * fabs(R.pp[k] - F.pp[k]) / fabs(F.pp[k]));
-    printf("BENCH|explicit bundle reduced over full, CPU of the integration, %g s, median of %d|%.2f|x|%s|\n", T, reps,
-           mr, "tests/bench/bench_bundle_rom.c");
-    printf("BENCH|explicit bundle full / reduced CPU per simulated s|%.4f / %.4f|s|%s|\n", mf / T, mre / T,
-           "tests/bench/bench_bundle_rom.c");
+    printf("BENCH|explicit %s: full over reduced, CPU of %g s, median of %d (full %.4f, reduced %.4f s per simulated s)"
+           "|%.2f|x|tests/bench/bench_bundle_rom.c|\n", tag, T, reps, mf / T, mre / T, mr);
     return 0;
+}
+
+int main(int argc, char **argv)
+{
+    double T = 60;
+    int reps = 3, nov = 0, given = 0;
+    const char *ov[40], *path = "data/scenes/quad_bundle_gallop.ini";
+    static char dur[64];
+    ov[nov++] = "bundle.model=explicit";
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--seconds") && i + 1 < argc) T = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 36) ov[nov++] = argv[++i], given = 1;
+        else path = argv[i], given = 1;
+    }
+    if (reps < 1 || reps > 15) reps = 3;
+    snprintf(dur, sizeof dur, "simulation.duration=%g", T);
+    ov[nov++] = dur;
+    if (openblas_set_num_threads) openblas_set_num_threads(1);
+    if (given) return bench_case(path, ov, nov, T, reps, "bundle (given)");
+    if (bench_case(path, ov, nov, T, reps, "quad bundle")) return 1;
+    ov[nov++] = "bundle.subconductors=2";
+    return bench_case(path, ov, nov, T, reps, "twin bundle");
 }
