@@ -44,7 +44,7 @@ void gal_bundle_rom_default_opts(gal_bundle_rom_opts *o)
 gal_bundle_rom *gal_bundle_rom_free(gal_bundle_rom *m)
 {
     if (!m) return NULL;
-    free(m->V), free(m->Cr), free(m->x), free(m->v), free(m->a), free(m->fi), free(m->fe), free(m->s);
+    free(m->V), free(m->Cr), free(m->ap), free(m->x), free(m->v), free(m->a), free(m->fi), free(m->fe), free(m->s);
     free(m->s1), free(m->x1), free(m->v1), free(m->a1), free(m->fi1), free(m->fe1), free(m->res), free(m->dx);
     free(m->J), free(m->Kr), free(m->sidx), free(m->VS), free(m->MS), free(m->xs), free(m->ys), free(m->Kl), free(m->Cl), free(m->tmpr), free(m->piv), free(m->piv2), free(m->wr), free(m->z), free(m->g), free(m->wrk);
     gal_csc_free(m->K0), gal_csc_free(m->M0);
@@ -124,7 +124,7 @@ int gal_bundle_rom_alloc_state(gal_bundle_rom *m, int rmax)
     size_t r = (size_t)rmax, bn = (size_t)m->ndof * sizeof(double), bs = (size_t)m->b->nstate * sizeof(double);
     m->V = malloc(r * bn);
     m->Cr = calloc(r * r, sizeof(double)), m->J = calloc(r * r, sizeof(double)), m->Kr = calloc(r * r, sizeof(double)), m->tmpr = calloc(r * r, sizeof(double));
-    m->x = calloc(r, sizeof(double)), m->v = calloc(r, sizeof(double)), m->a = calloc(r, sizeof(double));
+    m->x = calloc(r, sizeof(double)), m->v = calloc(r, sizeof(double)), m->ap = calloc(r, sizeof(double)), m->a = calloc(r, sizeof(double));
     m->fi = calloc(r, sizeof(double)), m->fe = calloc(r, sizeof(double)), m->x1 = calloc(r, sizeof(double));
     m->v1 = calloc(r, sizeof(double)), m->a1 = calloc(r, sizeof(double)), m->fi1 = calloc(r, sizeof(double));
     m->fe1 = calloc(r, sizeof(double)), m->res = calloc(r, sizeof(double)), m->dx = calloc(r, sizeof(double));
@@ -133,7 +133,7 @@ int gal_bundle_rom_alloc_state(gal_bundle_rom *m, int rmax)
     m->z = malloc(2 * bn), m->g = malloc(2 * bn);
     m->zv = m->z ? m->z + m->ndof : NULL, m->f = m->g ? m->g + m->ndof : NULL; /* adjacent: one product */
     m->wrk = malloc((size_t)2 * m->b->rod[0]->nq * sizeof(double));
-    if (!m->V || !m->Cr || !m->J || !m->Kr || !m->tmpr || !m->x || !m->v || !m->a || !m->fi || !m->fe || !m->x1 || !m->v1 ||
+    if (!m->V || !m->Cr || !m->J || !m->Kr || !m->ap || !m->tmpr || !m->x || !m->v || !m->a || !m->fi || !m->fe || !m->x1 || !m->v1 ||
         !m->a1 || !m->fi1 || !m->fe1 || !m->res || !m->dx || !m->piv || !m->piv2 || !m->wr || !m->s || !m->s1 || !m->z || !m->zv ||
         !m->g || !m->f || !m->wrk)
         return gal_error(GAL_ENOMEM, "bundle reduced model: out of memory for a basis of %d", rmax);
@@ -369,13 +369,26 @@ static int refactor(gal_bundle_rom *m, double h, double t1)
     return GAL_OK;
 }
 
-static void accept(gal_bundle_rom *m, double t1)
+static void accept(gal_bundle_rom *m, double t1, double h)
 {
     size_t br = (size_t)m->r * sizeof(double);
+    m->hprev = h;
+    memcpy(m->ap, m->a, br);
     memcpy(m->x, m->x1, br), memcpy(m->v, m->v1, br), memcpy(m->a, m->a1, br);
     memcpy(m->fi, m->fi1, br), memcpy(m->fe, m->fe1, br);
     memcpy(m->s, m->s1, (size_t)m->b->nstate * sizeof(double));
     m->t = t1, m->s_stale = 0;
+}
+
+/* The predictor dx: the acceleration extrapolated from the last two steps of the same size (the
+ * first step, and after a halving: held). */
+static void predict(gal_bundle_rom *m, double h)
+{
+    double be = m->beta, ex = m->hprev == h ? 1.0 : 0.0;
+    for (int k = 0; k < m->r; k++) {
+        double a1 = m->a[k] + ex * (m->a[k] - m->ap[k]);
+        m->dx[k] = h * m->v[k] + h * h * ((0.5 - be) * m->a[k] + be * a1);
+    }
 }
 
 /* A linearly implicit step (o.one_pass): the forces at the predictor, one correction by the kept
@@ -386,7 +399,7 @@ static int linear_step(gal_bundle_rom *m, double h)
 {
     int r = m->r, st;
     double t1 = m->t + h, rn, cv = m->gamma / (m->beta * h), *d = m->wr + 3 * r, *dv = m->wr + 4 * r;
-    for (int k = 0; k < r; k++) m->dx[k] = h * m->v[k] + 0.5 * h * h * m->a[k]; /* a1 = a0 */
+    predict(m, h);
     if ((st = residual(m, h, t1, 0, &rn))) return st;
     if (!isfinite(rn)) return gal_error(GAL_EFAIL, "bundle reduced model: the residual is not finite at t = %.6g s", t1);
     m->newton_iterations++;
@@ -401,7 +414,7 @@ static int linear_step(gal_bundle_rom *m, double h)
             for (int j = 0; j < r; j++) fe += m->Kl[k * r + j] * d[j] + m->Cl[k * r + j] * dv[j];
         m->fi1[k] += fi, m->fe1[k] -= fe;
     }
-    accept(m, t1);
+    accept(m, t1, h);
     m->s_stale = 1, m->linear_steps++;
     return GAL_OK;
 }
@@ -421,7 +434,7 @@ static int try_step(gal_bundle_rom *m, double h)
     double t1 = m->t + h, rprev = INFINITY;
     if (m->o.one_pass > 1 && m->lin_ok && m->hJ == h && m->steps % m->o.one_pass) return linear_step(m, h);
     m->lin_ok = 0;
-    for (int k = 0; k < r; k++) m->dx[k] = h * m->v[k] + 0.5 * h * h * m->a[k]; /* a1 = a0 */
+    predict(m, h);
     for (int it = 0; it < m->o.max_newton; it++) {
         double rn;
         int fresh = m->hJ != h;
@@ -431,7 +444,7 @@ static int try_step(gal_bundle_rom *m, double h)
         m->newton_iterations++;
         double tol = fmax(m->o.newton_tol * m->fscale, fmax(m->floor0, m->floor1));
         if (rn <= tol && it > 0) {
-            accept(m, t1);
+            accept(m, t1, h);
             m->lin_ok = it <= LINEAR_PASSES && m->hJ == h;
             return GAL_OK;
         }

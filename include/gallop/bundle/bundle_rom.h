@@ -87,6 +87,7 @@ typedef struct gal_bundle_rom {
     /* state */
     double t;
     double *x, *v, *a, *fi, *fe; /* r */
+    double *ap, hprev;      /* the acceleration before the last step, and its size (the predictor's) */
     double *s;              /* nstate: the reconstructed state at x (after gal_bundle_rom_sync) */
     int s_stale, lin_ok;    /* s lags x (a linear step); a linear step may follow */
     /* workspace */
