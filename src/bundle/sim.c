@@ -195,6 +195,7 @@ static int integrate(run_ws *w, const gal_model *m, gal_bundle_sim_result *res)
             while (w->dyn->steps < nsteps && !st) st = gal_bundle_dyn_step(w->dyn);
         }
         if (st) break;
+        if (w->rom) gal_bundle_rom_sync(w->rom);
         observe(w, m, res, i);
         if (tty && i % 200 == 0) fprintf(stderr, "\rexplicit bundle (%s): t = %.1f of %.1f s", w->rom ? "reduced" : "full", c->time[i],
                                          c->time[ns - 1]);

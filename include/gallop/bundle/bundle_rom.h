@@ -11,8 +11,12 @@
  * rotated by exp(z_phi x)); every term is the full model's at that state, projected:
  *   V^T M(s) V x'' + Cr x' + V^T grad U(s) = V^T F(t, s, V x'),   Cr = V^T (alpha M0 + beta K0) V,
  * integrated by generalized-alpha with modified Newton on the reduced tangent V^T K(s) V (dense,
- * r x r). No hyper-reduction: each step evaluates the whole assembled gradient and loads (the
- * single rod's ECSW samples elements of one gal_rod and does not take the spacer map). The model
+ * r x r, refreshed when a correction shrinks the residual less than 0.3x), and of each o.one_pass
+ * steps all but one linearly implicit after a Newton step that converged within two corrections (the
+ * forces once, at the predictor; rom.c). V^T M(s) V x = x + V_S^T (M(s) - M0)_SS V_S x over the few
+ * dofs S where the mass moves with the state (the spacers'), as V^T M0 V = I. No hyper-reduction:
+ * each pass evaluates the whole assembled gradient and loads (the single rod's ECSW samples
+ * elements of one gal_rod and does not take the spacer map). The model
  * checks itself as the single rod's (rom.h): the full residual R = M(s) a + C v + grad U - F at the
  * reconstructed state (a: the reduced equations' own acceleration there), du = K0^-1 R split into
  * the bundle's families (gal_bundle_classify: centroid vertical, horizontal, axial, rotation about
@@ -49,6 +53,11 @@ typedef struct gal_bundle_rom_opts {
                              * mode's displacement and velocity; 0 none */
     int inertia_vectors;    /* 1 (default): K0^-1 M0 u appended for every vector u past the modes
                              * (the static vectors' inertia, the next Krylov vector); 0 none */
+    int one_pass;           /* of each one_pass steps, all but one linearly implicit (rom.c: the
+                             * forces once, at the predictor, one correction by the kept iteration
+                             * matrix, the forces carried over it by the kept tangent) after a Newton
+                             * step that converged within two corrections; the others Newton's;
+                             * default 8, 0 or 1: Newton at every step */
 } gal_bundle_rom_opts;
 
 /* The self-check's figures (per gal_family, as gal_rom_check). */
@@ -64,6 +73,11 @@ typedef struct gal_bundle_rom {
     int ndof, r, nmodes;    /* the first nmodes columns of V are the selected modes */
     double *V;              /* ndof x r, column-major */
     double *Cr;             /* r x r */
+    double *Kr;             /* r x r: V^T K V at the last fresh tangent (o.one_pass's steps) */
+    int nS, *sidx;          /* the dofs where M(s) can differ from M0 (the spacers' and those the
+                             * sub-conductors' dofs at the spacers depend on); 0: none known */
+    double *VS, *MS;        /* V's rows there (nS x r, row-major), (M0)_SS (nS x nS) */
+    double *xs, *ys;        /* ndof (kept zero), ndof of scratch */
     double *Kl, *Cl;        /* r x r: -V^T dF/ds V, -V^T dF/dv V of the mean loads at the equilibrium
                              * (the iteration matrix's share of the loads), or NULL */
     gal_csc *K0, *M0;       /* at the equilibrium */
@@ -73,14 +87,16 @@ typedef struct gal_bundle_rom {
     /* state */
     double t;
     double *x, *v, *a, *fi, *fe; /* r */
-    double *s;              /* nstate: the reconstructed state at x */
+    double *ap, hprev;      /* the acceleration before the last step, and its size (the predictor's) */
+    double *s;              /* nstate: the reconstructed state at x (after gal_bundle_rom_sync) */
+    int s_stale, lin_ok;    /* s lags x (a linear step); a linear step may follow */
     /* workspace */
     double *s1, *x1, *v1, *a1, *fi1, *fe1, *res, *dx, *wr, *J, *tmpr; /* nstate, r, 7 r, r x r */
     int *piv, *piv2;        /* J's, tmpr's */
     double hJ, floor0, floor1;
     double *z, *zv, *g, *f, *wrk; /* ndof each (zv after z, f after g), 2 nq */
     /* counters */
-    long steps, newton_iterations, tangents, force_evaluations, rejected_steps;
+    long steps, newton_iterations, tangents, force_evaluations, rejected_steps, linear_steps;
     double build_time_s;
     /* the run's self-check (gal_bundle_rom_selfcheck) */
     int checks, valid;
@@ -98,6 +114,8 @@ gal_bundle_rom *gal_bundle_rom_free(gal_bundle_rom *m);
 void gal_bundle_rom_mean_loads(const gal_bundle_loads *bl, gal_bundle_loads *out);
 /* One step of o.h (halved on Newton failure, o.max_halvings deep). */
 int gal_bundle_rom_step(gal_bundle_rom *m);
+/* m->s rebuilt at x when a linear step left it behind. */
+void gal_bundle_rom_sync(gal_bundle_rom *m);
 /* The full residual at the state (see above). */
 int gal_bundle_rom_residual(gal_bundle_rom *m, gal_bundle_rom_check *chk);
 /* The run's check at the state reached: the residual, residual_max and valid kept; past tol a
