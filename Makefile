@@ -33,7 +33,7 @@ DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-de
             liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox jq libopenmpi-dev openmpi-bin
 STAMP    := build/.deps-ok
 
-.PHONY: all deps demo check bench report clean fuzz mutate install
+.PHONY: all deps demo check bench report report-bundle-grid report-bundle-partner clean fuzz mutate install
 all: $(BUILD)/gallop $(BUILD)/libgallop.a
 
 # ---- Debian packages ----
@@ -159,6 +159,14 @@ bench: $(BUILD)/gallop $(BUILD)/libgallop.a
 
 report: $(BUILD)/gallop
 	@bash notebooks-free-reports/make_report.sh $(BUILD)/gallop
+
+# the equivalent bundle against the explicit one over a grid (long: 48 runs, README "Bundles")
+report-bundle-grid: $(BUILD)/gallop
+	@bash notebooks-free-reports/bundle_grid.sh $(BUILD)/gallop out/report
+
+# the twin's reduced model against its full model, 300 s (BEFORE=path of an older gallop to compare)
+report-bundle-partner: $(BUILD)/gallop
+	@bash notebooks-free-reports/bundle_partner.sh $(BUILD)/gallop out/report $(BEFORE)
 
 clean:
 	rm -rf build out

@@ -77,8 +77,9 @@ static void station(const gal_bundle *b, const double *full, int i, const double
     ke[GAL_FAMILY_AXIAL] += n * comp[3] * comp[3];
 }
 
-/* Symmetry about mid-span of the dominant family's component. */
-static gal_symmetry symmetry(const gal_bundle *b, int fam, const double *comp, const double *rem)
+/* The correlation of the dominant family's component with its mirror image about mid-span (1:
+ * symmetric, -1: antisymmetric). */
+static double mirror(const gal_bundle *b, int fam, const double *comp, const double *rem)
 {
     int nn = b->nn, n = b->n;
     double num = 0, den = 0;
@@ -95,8 +96,7 @@ static gal_symmetry symmetry(const gal_bundle *b, int fam, const double *comp, c
             num += comp[4 * i + fam] * sg * comp[4 * j + fam], den += comp[4 * i + fam] * comp[4 * i + fam];
         }
     }
-    double r = den > 0 ? num / den : 0;
-    return r > 0.9 ? GAL_SYM_SYMMETRIC : r < -0.9 ? GAL_SYM_ANTISYMMETRIC : GAL_SYM_NONE;
+    return den > 0 ? num / den : 0;
 }
 
 size_t gal_bundle_classify_scratch(const gal_bundle *b)
@@ -146,5 +146,7 @@ void gal_bundle_classify(const gal_bundle *b, const double *z, double *full, gal
         if (md->share[f] > md->share[fam]) fam = f;
     }
     md->family = (gal_family)fam;
-    md->symmetry = symmetry(b, fam, comp, rem);
+    double r = mirror(b, fam, comp, rem);
+    md->symmetry = r > 0.9 ? GAL_SYM_SYMMETRIC : r < -0.9 ? GAL_SYM_ANTISYMMETRIC : GAL_SYM_NONE;
+    md->parity = r >= 0 ? GAL_SYM_SYMMETRIC : GAL_SYM_ANTISYMMETRIC; /* the larger part's */
 }

@@ -174,14 +174,13 @@ int gal_bundle_modes_find(gal_bundle *b, const int want[GAL_FAMILY_COUNT], int m
         if (st) return st;
         int short_family = 0;
         for (int f = 0; f < 3; f++) short_family |= out->found[f] < want[f];
+        /* every mode up to the torsional partners' band (gal_modes_select) */
+        short_family |= out->mode[out->n - 1].frequency_hz < gal_modes_partner_top(out, want);
         if (!short_family || nev >= max_modes) break;
         gal_modes_clear(out);
         nev *= 2;
     }
-    for (int k = 0; k < out->n; k++) {
-        gal_mode *md = out->mode + k;
-        if (md->family < 3 && out->selected[md->family] < want[md->family]) md->selected = 1, out->selected[md->family]++;
-    }
+    gal_modes_select(out, want);
     out->rounds = rounds, out->op_applications = op, out->factorizations = fact, out->solves = solves;
     out->wall_time_s = gal_wall_time() - t0;
     return GAL_OK;

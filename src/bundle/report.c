@@ -124,6 +124,8 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle *b
             snprintf(key, sizeof key, "share_%s", gal_family_names[f]);
             gal_json_kv_num(j, key, m->share[f]);
         }
+        gal_json_kv_str(j, "selected_as", m->partner ? "partner" : "lowest");
+        if (m->partner) gal_json_kv_int(j, "partner_of", m->partner);
         gal_json_obj_end(j);
     }
     gal_json_arr_end(j);
@@ -162,9 +164,6 @@ void gal_bundle_report_table(FILE *fp, const gal_scene *sc, const gal_bundle *b,
                 gal_family_names[m->family], gal_symmetry_names[m->symmetry], m->frequency_hz, 1.0 / m->frequency_hz,
                 m->share[0], m->share[1], m->share[2], m->share[3], m->share[4]);
     }
-    for (int f = 0; f < 3; f++)
-        if (md->selected[f] < want[f])
-            fprintf(fp, "note: %d %s mode%s asked, %d found among the %d lowest modes\n", want[f],
-                    gal_family_names[f], want[f] > 1 ? "s" : "", md->selected[f], md->n);
+    gal_report_modes_notes(fp, md, want);
     fprintf(fp, "\n%d modes computed (%d subspan), wall time %.3f s\n", md->n, md->found[GAL_FAMILY_SUBSPAN], wall);
 }

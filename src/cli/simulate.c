@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "gallop.h"
+#include "gallop/bundle/bundle.h"
 #include "gallop/model/model.h"
 #include "gallop/run/forward.h"
 #include "gallop/run/sim.h"
@@ -47,6 +48,15 @@ static int compare_full_only(const char *outdir, const gal_scene *sc, const gal_
     fprintf(stderr, "gallop compare: the reduced model failed: %s\ngallop compare: the full model's results are "
             "written alone: %s/{trace.csv,summary.json}\n", why, outdir);
     return 1;
+}
+
+/* An equivalent bundle galloping at f Hz outside its measured domain says so
+ * (gal_bundle_equivalent_outside). */
+static void warn_domain(const char *cmd, const gal_scene *sc, const gal_data *d, double f)
+{
+    char msg[640];
+    if (gal_bundle_equivalent_outside(sc, &d->md, f, msg, sizeof msg))
+        fprintf(stderr, "gallop %s: warning: %s\n", cmd, msg);
 }
 
 /* The scene's model and its data forwarded to the start of a run. */
@@ -92,6 +102,7 @@ int gal_cli_simulate(int argc, char **argv)
         print_run(T->name, &r, &ms);
         printf("files: %s/{trace.csv,summary.json}\n", outdir);
         warn_invalid("simulate", &sc, &r);
+        warn_domain("simulate", &sc, d, ms.frequency_hz[1]);
     }
     gal_sim_result_clear(&r);
     gal_data_free(d);
@@ -134,6 +145,7 @@ int gal_cli_compare(int argc, char **argv)
                100 * c.err_horizontal, 100 * c.err_twist, c.speedup, red.build_time_s);
         printf("files: %s/{compare.csv,summary.json}\n", outdir);
         warn_invalid("compare", &sc, &red);
+        warn_domain("compare", &sc, d, mf.frequency_hz[1]);
     }
     gal_sim_result_clear(&full);
     gal_sim_result_clear(&red);

@@ -85,6 +85,8 @@ static void classify(const gal_rod *rod, const double *q, const double *phi_free
     }
     double r = den > 0 ? num / den : 0;
     md->symmetry = r > 0.9 ? GAL_SYM_SYMMETRIC : r < -0.9 ? GAL_SYM_ANTISYMMETRIC : GAL_SYM_NONE;
+    md->parity = r >= 0 ? GAL_SYM_SYMMETRIC : GAL_SYM_ANTISYMMETRIC; /* r: the symmetric part's energy
+                                                                       * less the other's, over both */
 }
 
 /* Within a cluster of (numerically) equal frequencies any orthonormal combination is a mode:

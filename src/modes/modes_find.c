@@ -239,6 +239,26 @@ static double string_lambda1(const gal_rod *rod, const double *q)
     return T > 0 && L0 > 0 && rod->p.mass > 0 ? GAL_PI * GAL_PI / (L0 * L0) * T / rod->p.mass : 0;
 }
 
+/* The torsional partners' band (gal_modes_select): when a torsional mode may lie in it above the
+ * modes from the bottom (the lowest twist estimate lam_t, omega^2, below its top: the estimates
+ * are low, never high, for the bundle's symmetric twist and eccentric ice), the modes from the
+ * bottom up to its top. */
+static int partner_band(gal_modes_ctx *c, double lam_t, const int want[GAL_FAMILY_COUNT], int max_modes,
+                        gal_modes *out, gal_modes *acc)
+{
+    double top = 2 * GAL_PI * gal_modes_partner_top(out, want);
+    if (!(lam_t < top * top)) return GAL_OK;
+    int nev = out->n;
+    while (out->mode[out->n - 1].omega < top && nev < max_modes) {
+        nev = 2 * nev < max_modes ? 2 * nev : max_modes;
+        gal_modes_clear(out);
+        int st = gal_modes_run(c, nev, 0, 1, out);
+        add_counters(acc, out);
+        if (st) return st;
+    }
+    return GAL_OK;
+}
+
 static int find(gal_modes_ctx *c, const int want[GAL_FAMILY_COUNT], int max_modes, gal_modes *out, gal_modes *acc)
 {
     /* the vertical and horizontal modes come in near pairs from the bottom (exact pairs on a
@@ -252,13 +272,20 @@ static int find(gal_modes_ctx *c, const int want[GAL_FAMILY_COUNT], int max_mode
     double *est = malloc((size_t)ne * sizeof(double));
     if (!est) return gal_error(GAL_ENOMEM, "modes: out of memory");
     double bound = (pairs + 1) * (pairs + 1) * string_lambda1(c->rod, c->q);
+    /* with torsional modes asked, the partners' band too (gal_modes_select: up to 1 + GAL_PARTNER_BAND
+     * times the last vertical mode's frequency, estimated as the string's pairs-th) */
+    double wb = (1 + GAL_PARTNER_BAND) * pairs / (pairs + 1.0), band = wt > 0 ? wb * wb * bound : 0;
+    int wide = (int)ceil((1 + GAL_PARTNER_BAND) * pairs);
+    if (band > bound) bound = band;
     int nest = wt > 0 || bound > 0 ? twist_estimates(c->rod, &c->K0, ne, wt > 0 ? wt + 1 : 1, wt, bound, est) : 0, low = 0;
     while (low < nest && est[low] < bound) low++;
     /* the twist block holds the torsional modes where the twist is not coupled to the motion
      * through the mass: not with eccentric ice (there they came out 1.3 times higher) */
     int windows = nest >= wt + 1 && !c->rod->ecc_c;
     c->spare = windows ? wt : 0;
-    st = from_bottom(c, 2 * pairs + low, max_modes, want, 3, out, acc);
+    /* torsional modes in the band: the flexural ones up to its top too (one run, foreseen) */
+    st = from_bottom(c, 2 * (low > 0 && band > 0 && wide > pairs ? wide : pairs) + low, max_modes, want, 3, out, acc);
+    if (!st && nest > 0) st = partner_band(c, est[0], want, max_modes, out, acc);
     c->spare = 0;
     if (!st && wt > 0 && out->found[GAL_FAMILY_TORSIONAL] < wt && out->n < max_modes) {
         if (windows) st = torsional_windows(c, est, wt, out, acc, &done);
@@ -290,14 +317,7 @@ static int find_with(const gal_rod *rod, const double *q, gal_tangent *t, const 
         gal_modes_clear(out);
         return st;
     }
-    for (int f = 0; f < GAL_FAMILY_COUNT; f++) out->selected[f] = 0;
-    for (int k = 0; k < out->n; k++) {
-        gal_mode *md = out->mode + k;
-        if (md->family < 3 && out->selected[md->family] < want[md->family]) {
-            md->selected = 1;
-            out->selected[md->family]++;
-        }
-    }
+    gal_modes_select(out, want);
     out->rounds = acc.rounds, out->arpack_restarts = acc.arpack_restarts;
     out->op_applications = acc.op_applications, out->factorizations = acc.factorizations, out->solves = acc.solves;
     out->wall_time_s = gal_wall_time() - t0;

@@ -185,10 +185,30 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_equilibri
         gal_json_kv_num(j, "share_horizontal", m->share[GAL_FAMILY_HORIZONTAL]);
         gal_json_kv_num(j, "share_torsional", m->share[GAL_FAMILY_TORSIONAL]);
         gal_json_kv_num(j, "share_axial", m->share[GAL_FAMILY_AXIAL]);
+        gal_json_kv_str(j, "selected_as", m->partner ? "partner" : "lowest");
+        if (m->partner) gal_json_kv_int(j, "partner_of", m->partner);
         gal_json_obj_end(j);
     }
     gal_json_arr_end(j);
     return GAL_OK;
+}
+
+void gal_report_modes_notes(FILE *fp, const gal_modes *md, const int want[GAL_FAMILY_COUNT])
+{
+    for (int k = 0; k < md->n; k++) {
+        const gal_mode *m = md->mode + k, *v = NULL;
+        for (int i = 0; i < md->n && m->partner; i++)
+            if (md->mode[i].index == m->partner) v = md->mode + i;
+        if (!v) continue;
+        fprintf(fp, "note: torsional mode %d (%s, %.6f Hz) added to the %d asked: the torsional mode of the "
+                "symmetry of vertical mode %d (%s, %.6f Hz) nearest it, within %.0f%% (galloping couples them)\n",
+                m->index, gal_symmetry_names[m->parity], m->frequency_hz, want[GAL_FAMILY_TORSIONAL], v->index,
+                gal_symmetry_names[v->parity], v->frequency_hz, 100 * GAL_PARTNER_BAND);
+    }
+    for (int f = 0; f < 3; f++)
+        if (md->selected[f] < want[f])
+            fprintf(fp, "note: %d %s mode%s asked, %d found among the %d lowest modes\n", want[f],
+                    gal_family_names[f], want[f] > 1 ? "s" : "", md->selected[f], md->n);
 }
 
 int gal_report_modes(const char *dir, const gal_scene *sc, const gal_equilibrium *eq,
@@ -225,10 +245,7 @@ void gal_report_modes_table(FILE *fp, const gal_scene *sc, const gal_equilibrium
                 gal_family_names[m->family], gal_symmetry_names[m->symmetry], m->frequency_hz,
                 1.0 / m->frequency_hz, m->share[0], m->share[1], m->share[2], m->share[3]);
     }
-    for (int f = 0; f < 3; f++)
-        if (md->selected[f] < want[f])
-            fprintf(fp, "note: %d %s mode%s asked, %d found among the %d lowest modes\n", want[f],
-                    gal_family_names[f], want[f] > 1 ? "s" : "", md->selected[f], md->n);
+    gal_report_modes_notes(fp, md, want);
     fprintf(fp, "\n%d modes computed (%d ARPACK run%s), wall time %.3f s\n", md->n, md->rounds,
             md->rounds > 1 ? "s" : "", wall);
 }

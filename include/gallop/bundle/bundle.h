@@ -119,6 +119,17 @@ void gal_bundle_params_of(const gal_scene *sc, gal_bundle_params *bp);
 struct gal_model;
 int gal_bundle_solve_model(const struct gal_model *m, gal_bundle **out, gal_modes *md);
 
+/* The equivalent model's measured domain (README "Bundles", "When the equivalent model is good
+ * enough"): a bundle whose selected vertical mode has its torsional partner within this fraction of
+ * its frequency couples them near resonance and rotates by tens of degrees, where the equivalent
+ * rod's amplitudes were 27% to 39% off the explicit model's (outside it: within 6%). */
+#define GAL_EQUIVALENT_NEAR 0.05
+/* 1 when the scene is an equivalent bundle outside that domain for a galloping at f_gallop Hz (the
+ * selected vertical mode nearest it has its partner within GAL_EQUIVALENT_NEAR), with the warning in
+ * msg (len bytes): the modes, their frequencies and what to do; 0 otherwise (msg empty). md: the
+ * scene's modes, selected (gal_modes_find). */
+int gal_bundle_equivalent_outside(const gal_scene *sc, const gal_modes *md, double f_gallop, char *msg, size_t len);
+
 /* `gallop modes` of an explicit bundle: the table on fp and the files in dir (README "Bundles":
  * modes.csv and summary.json as a single rod's with share_subspan, equilibrium.csv and shapes.csv
  * with a column `sub`, the sub-conductor, 1 to n). */

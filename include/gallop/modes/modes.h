@@ -37,6 +37,11 @@ typedef struct gal_mode {
     int selected;          /* among the modes the scene asked for */
     int index;             /* rank among all the modes of the span by frequency, from 1 (a search
                             * by family computes a window of them: the ranks then have gaps) */
+    gal_symmetry parity;   /* the larger part of the family's component about mid-span, symmetric
+                            * or antisymmetric (never none: on an inclined span, where symmetry is
+                            * none, the part its dominant half-wave count has) */
+    int partner;           /* selected as the torsional partner of the vertical mode of this index
+                            * (gal_modes_select); 0: not selected, or among the lowest asked */
 } gal_mode;
 
 typedef struct gal_modes {
@@ -59,8 +64,32 @@ int gal_modes_solve(const gal_rod *rod, const double *q, int nev, gal_modes *out
  * gal_modes_find_eq does. */
 int gal_modes_solve_eq(gal_equilibrium *eq, int nev, gal_modes *out);
 
+/* The torsional partners' band: a selected vertical mode's partner lies within this fraction of its
+ * frequency (gal_modes_select). */
+#define GAL_PARTNER_BAND 0.5
+
+/* Marks the modes a reduced model takes (README "Modes", "Which modes are selected"): the lowest
+ * want[f] of each family f (vertical, horizontal, torsional) and, when want[torsional] >= 1, for
+ * each of the selected vertical modes the torsional mode of its parity nearest it in frequency,
+ * within GAL_PARTNER_BAND of it, when not selected already (added to the number asked; its
+ * `partner` the vertical mode's index). Galloping couples a vertical mode to the torsional modes
+ * of its own symmetry (the aerodynamic moment and lift along the span project on a mode of the
+ * other symmetry to nothing), most to the nearest in frequency; a bundle's first torsional mode
+ * may be the antisymmetric one while the galloping vertical mode is symmetric. md must hold every
+ * mode up to gal_modes_partner_top (gal_modes_find and gal_bundle_modes_find see to it). */
+void gal_modes_select(gal_modes *md, const int want[GAL_FAMILY_COUNT]);
+/* The frequency (Hz) up to which md must hold every mode for gal_modes_select's partners: the
+ * highest of the lowest want[vertical] vertical modes of md times 1 + GAL_PARTNER_BAND; 0 when no
+ * torsional mode or no vertical one is asked or md holds no vertical mode. */
+double gal_modes_partner_top(const gal_modes *md, const int want[GAL_FAMILY_COUNT]);
+
+/* The torsional partner of the selected vertical mode nearest f Hz (the torsional mode of its
+ * parity nearest it in frequency within the band, selected or not): its position in md, with the
+ * vertical mode's in *v and |f_t / f_v - 1| in *rel; -1 when none. */
+int gal_modes_partner_near(const gal_modes *md, double f, int *v, double *rel);
+
 /* Enough modes to hold `want[f]` modes of each family f (vertical, horizontal, torsional; axial
- * ignored), the lowest want[f] of each family marked selected. The flexural families from the
+ * ignored), selected by gal_modes_select (the torsional partners computed too). The flexural families from the
  * bottom of the spectrum (more asked until each is found or `max_modes` is reached); the torsional
  * modes above them each by a shift at its estimate from the twist block of K and M, computing only
  * the few modes nearest it (their ranks from the inertia of K - sigma M), checked (a torsional mode

@@ -27,6 +27,10 @@ int gal_report_modes_csv(gal_outset *o, const gal_modes *md, int subspan);
 void gal_report_modes_table(FILE *fp, const gal_scene *sc, const gal_equilibrium *eq,
                             const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall_time_s);
 
+/* The table's notes on the selection (gal_modes_select): each torsional partner with the vertical
+ * mode it was added for, and each family with fewer selected than asked. */
+void gal_report_modes_notes(FILE *fp, const gal_modes *md, const int want[GAL_FAMILY_COUNT]);
+
 #ifdef __cplusplus
 }
 #endif
