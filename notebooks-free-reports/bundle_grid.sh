@@ -6,10 +6,15 @@
 # `gallop simulate --model full` (the mid-span amplitudes over the steady window), into
 # OUTDIR/bundle_grid/; then OUTDIR/bundle_grid/grid.csv (one row a case, both models),
 # report.md (the table, with the first sub-span's taut-string frequency over the galloping one,
-# f_ss / f_g, f_ss = sqrt(H / m) / (2 L / (spacers + 1)), H and m one sub-conductor's) and
-# fig/grid.png (each measure's equivalent/explicit - 1 against f_ss / f_g; gnuplot).
+# f_ss / f_g, f_ss = sqrt(H / m) / (2 L / (spacers + 1)), H and m one sub-conductor's, and the
+# detuning d_t = |f_t / f_v - 1| of the torsional partner f_t of the vertical mode f_v nearest the
+# galloping, from the equivalent model's `gallop modes`: gal_bundle_equivalent_outside's criterion)
+# and fig/grid.png, fig/detuning.png (each measure's equivalent/explicit - 1 against f_ss / f_g and
+# against d_t; gnuplot).
 # BUNDLE_GRID_TOTALS="KG KGM2": the spacers' total mass and inertia held (each spacer 1/spacers of
 # them), so that the spacing alone varies (default: each spacer the scene's, the totals growing).
+# BUNDLE_GRID_REUSE=1: a case whose two summary.json files are there is not run again (a grid
+# resumed, or its report made again).
 # BUNDLE_DURATION: simulated s of each run (the scene's 500); BUNDLE_SET: "section.key=value ..."
 # given to every run (a quick look: "model.elements=24 simulation.duration=60").
 # Long (48 runs, about 15 min on one free core): `make report-bundle-grid`, not `make check`.
@@ -60,10 +65,12 @@ for n in $ns_list; do
                 set+=(--set "bundle.spacer_mass=$(awk -v t="$tm" -v s="$s" 'BEGIN { printf "%.9g", t / s }')"
                       --set "bundle.spacer_inertia=$(awk -v t="$ti" -v s="$s" 'BEGIN { printf "%.9g", t / s }')")
             fi
-            echo "  bundle grid: $c" >&2
-            "$bin" stability "$scene" "${set[@]}" -o "$d/$c/stability" > "$d/logs/stability_$c.log" 2>&1 || status=1
-            "$bin" simulate "$scene" --model full "${set[@]}" -o "$d/$c/full" > "$d/logs/full_$c.log" 2>&1 || status=1
             st=$d/$c/stability/summary.json sm=$d/$c/full/summary.json
+            if [ -z "${BUNDLE_GRID_REUSE:-}" ] || [ ! -s "$st" ] || [ ! -s "$sm" ]; then
+                echo "  bundle grid: $c" >&2
+                "$bin" stability "$scene" "${set[@]}" -o "$d/$c/stability" > "$d/logs/stability_$c.log" 2>&1 || status=1
+                "$bin" simulate "$scene" --model full "${set[@]}" -o "$d/$c/full" > "$d/logs/full_$c.log" 2>&1 || status=1
+            fi
             if [ $model = explicit ]; then
                 v=$(jget "$sm" probes centroid vertical_peak_to_peak_m); h=$(jget "$sm" probes centroid horizontal_peak_to_peak_m)
                 t=$(jget "$sm" probes centroid twist_peak_to_peak_deg); f=$(jget "$sm" probes centroid vertical_frequency_hz)
@@ -71,11 +78,23 @@ for n in $ns_list; do
                 v=$(jget "$sm" probes vertical peak_to_peak_m); h=$(jget "$sm" probes horizontal peak_to_peak_m)
                 t=$(jget "$sm" probes twist peak_to_peak_deg); f=$(jget "$sm" frequency_hz)
             fi
+            if [ $model = equivalent ]; then
+                "$bin" modes "$scene" "${set[@]}" -o "$d/$c/modes" > "$d/logs/modes_$c.log" 2>&1 || status=1
+            fi
             fss=$(awk -v H="$H" -v m="$m" -v L="$L" -v s="$s" 'BEGIN { printf "%.6g", sqrt(H / m) / (2 * L / (s + 1)) }')
             echo "$n,$s,$fss,$model,$(jget "$st" onset_speed_m_s),$v,$h,$t,$f" >> "$d/runs.csv"
         done
     done
 done
+
+# detuning CASE FG: |f_t / f_v - 1|, f_v the selected vertical mode of the equivalent model nearest FG,
+# f_t the torsional mode of its symmetry nearest it
+detuning() {
+    awk -F, -v fg="$2" 'NR == 1 { next } { f[NR] = $4; fam[NR] = $2; sym[NR] = $3; sel[NR] = $10; n = NR }
+        END { v = 0; for (i = 2; i <= n; i++) if (fam[i] == "vertical" && sel[i] == 1 && (!v || (f[i] - fg) ^ 2 < (f[v] - fg) ^ 2)) v = i
+              t = 0; for (i = 2; i <= n; i++) if (v && fam[i] == "torsional" && sym[i] == sym[v] && (!t || (f[i] - f[v]) ^ 2 < (f[t] - f[v]) ^ 2)) t = i
+              if (t) { x = f[t] / f[v] - 1; printf "%.4f", x < 0 ? -x : x } }' "$d/$1/modes/modes.csv" 2>/dev/null
+}
 
 # grid.csv: one row a case, the explicit and the equivalent side by side, f_ss / f_g (f_g the
 # explicit model's galloping frequency) and each measure's equivalent / explicit - 1
@@ -91,7 +110,15 @@ awk -F, 'NR == 1 { next }
             print k "," x[3] "," x[9] "," r "," x[5] "," e[5] "," x[6] "," e[6] "," x[7] "," e[7] "," x[8] "," e[8] "," \
                   rel(e[5], x[5]) "," rel(e[6], x[6]) "," rel(e[7], x[7]) "," rel(e[8], x[8])
         }
-    }' "$d/runs.csv" > "$d/grid.csv"
+    }' "$d/runs.csv" > "$d/grid.tmp"
+{
+    head -1 "$d/grid.tmp" | sed 's/$/,partner_detuning/'
+    tail -n +2 "$d/grid.tmp" | while IFS=, read -r n s rest; do
+        fg=$(echo "$rest" | cut -d, -f2)
+        echo "$n,$s,$rest,$(detuning "n${n}_s${s}_equivalent" "$fg")"
+    done
+} > "$d/grid.csv"
+rm -f "$d/grid.tmp"
 
 pct() { [ -n "$1" ] && awk -v x="$1" 'BEGIN { printf "%+.1f%%", 100 * x }' || printf 'n/a'; }
 f2() { [ -n "$1" ] && awk -v x="$1" 'BEGIN { printf "%.3g", x }' || printf 'n/a'; }
@@ -102,12 +129,14 @@ f2() { [ -n "$1" ] && awk -v x="$1" 'BEGIN { printf "%.3g", x }' || printf 'n/a'
     echo "sub-conductor, D-shaped ice, 10 m/s) with \`bundle.subconductors\` and \`bundle.spacers\` set, each case in"
     echo "both models: \`gallop stability\` (coupled onset) and \`gallop simulate --model full\` (mid-span peak-to-peak"
     echo "over the steady window; twist: the bundle's rotation). f_ss: the first sub-span's taut-string frequency,"
-    echo "f_g: the explicit model's galloping frequency. Each pair: explicit / equivalent (difference)."
+    echo "f_g: the explicit model's galloping frequency; d_t: the detuning |f_t / f_v - 1| of the torsional partner"
+    echo "f_t of the vertical mode f_v nearest f_g (the equivalent model's modes). Each pair: explicit / equivalent"
+    echo "(difference)."
     echo
-    echo "| n | spacers | f_ss / f_g | onset m/s | vertical p-p m | horizontal p-p m | rotation p-p deg |"
-    echo "|---|---|---|---|---|---|---|"
-    awk -F, 'NR > 1' "$d/grid.csv" | while IFS=, read -r n s fss fg r ox oe vx ve hx he tx te dox dv dh dt; do
-        echo "| $n | $s | $(f2 "$r") | $(f2 "$ox") / $(f2 "$oe") ($(pct "$dox")) | $(f2 "$vx") / $(f2 "$ve") ($(pct "$dv")) |" \
+    echo "| n | spacers | f_ss / f_g | d_t | onset m/s | vertical p-p m | horizontal p-p m | rotation p-p deg |"
+    echo "|---|---|---|---|---|---|---|---|"
+    awk -F, 'NR > 1' "$d/grid.csv" | while IFS=, read -r n s fss fg r ox oe vx ve hx he tx te dox dv dh dt pd; do
+        echo "| $n | $s | $(f2 "$r") | $(pct "$pd") | $(f2 "$ox") / $(f2 "$oe") ($(pct "$dox")) | $(f2 "$vx") / $(f2 "$ve") ($(pct "$dv")) |" \
              "$(f2 "$hx") / $(f2 "$he") ($(pct "$dh")) | $(f2 "$tx") / $(f2 "$te") ($(pct "$dt")) |"
     done
     echo
@@ -124,4 +153,11 @@ gnuplot -e "set terminal pngcairo size 1100,620; set output '$d/fig/grid.png'; s
          for [n in '$ns_list'] '$d/grid.csv' using (\$1 == n + 0 ? \$5 : NaN):(100 * \$14) with points pt 6 title 'onset, n = '.n,
          for [n in '$ns_list'] '$d/grid.csv' using (\$1 == n + 0 ? \$5 : NaN):(100 * \$17) with points pt 4 title 'rotation, n = '.n" \
     2>> "$d/fig/gnuplot.log" && echo "![equivalent against explicit over f_ss / f_g](fig/grid.png)" >> "$d/report.md" || status=1
+gnuplot -e "set terminal pngcairo size 1100,620; set output '$d/fig/detuning.png'; set datafile separator ',';
+    set xlabel 'd_t = |f_t / f_v - 1| (torsional partner of the galloping vertical mode)'; set format x '%.0f%%';
+    set ylabel 'equivalent / explicit - 1 (%)'; set key outside right; set grid; set arrow from 5, graph 0 to 5, graph 1 nohead dt 2;
+    plot for [n in '$ns_list'] '$d/grid.csv' using (\$1 == n + 0 ? 100 * \$18 : NaN):(100 * \$15) with points pt 7 title 'vertical, n = '.n,
+         for [n in '$ns_list'] '$d/grid.csv' using (\$1 == n + 0 ? 100 * \$18 : NaN):(100 * \$14) with points pt 6 title 'onset, n = '.n,
+         for [n in '$ns_list'] '$d/grid.csv' using (\$1 == n + 0 ? 100 * \$18 : NaN):(100 * \$17) with points pt 4 title 'rotation, n = '.n" \
+    2>> "$d/fig/gnuplot.log" && echo "![equivalent against explicit over d_t](fig/detuning.png)" >> "$d/report.md" || status=1
 exit $status

@@ -7,7 +7,8 @@
 # tolerances (vertical 2%, rotation 15%; measured 0.42% and 9.2%, with the first torsional mode
 # alone 18.7% and 71.5%), and fig/twin.png: the mid-span vertical displacement and bundle rotation,
 # full against reduced (and before). About 1 min per binary on a free core: `make report-bundle-partner`.
-# BUNDLE_SET: "section.key=value ..." given to every run.
+# BUNDLE_SET: "section.key=value ..." given to every run; BUNDLE_PARTNER_REUSE=1: a run whose
+# summary.json and log are there is not made again (the report and figure made again).
 # Exit status: 0 within the tolerances, 1 a run failed or an error past its tolerance, 2 bad usage.
 set -u
 bin=${1:-}; out=${2:-}; before=${3:-}
@@ -30,6 +31,7 @@ status=0
 runs=(after); bins=("$bin")
 [ -n "$before" ] && runs+=(before) bins+=("$before")
 for i in "${!runs[@]}"; do
+    [ -n "${BUNDLE_PARTNER_REUSE:-}" ] && [ -s "$d/${runs[$i]}/summary.json" ] && [ -s "$d/${runs[$i]}.log" ] && continue
     (cd "$root" && "${bins[$i]}" compare tests/bundle/drake_twin.ini "${set_[@]}" -o "$d/${runs[$i]}") \
         > "$d/${runs[$i]}.log" 2>&1 || status=1
 done

@@ -5,7 +5,8 @@
  * with the default 2/2/1 modes, selects its symmetric torsional mode (0.439 Hz, next to the
  * symmetric vertical one at 0.428 Hz) besides the first torsional, the antisymmetric one (the
  * selection before it took the first alone, and the reduced twin missed the full one's galloping
- * by 18% vertical and 72% in rotation: README "Bundles"); the single iced Drake selects as before. */
+ * by 18% vertical and 72% in rotation: README "Bundles"), also inclined (by parity); the single
+ * iced Drake selects as before; the equivalent bundle's domain (gal_bundle_equivalent_outside). */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/bundle/bundle.h"
@@ -76,8 +77,9 @@ static void test_rule(void)
           "torsional modes of the other parity or farther taken: %d %d", m[5].selected, m[8].selected);
 }
 
-/* The twin's modes in model `model` (explicit or equivalent) with the default selection. */
-static int twin_modes(const char *model, gal_modes *out)
+/* The twin's modes in model `model` (explicit or equivalent) with the default selection, with one
+ * more override (or NULL). */
+static int twin_modes(const char *model, const char *extra, gal_modes *out)
 {
     char kv[64];
     const char *ov[16];
@@ -85,6 +87,7 @@ static int twin_modes(const char *model, gal_modes *out)
     while (twin[n]) ov[n] = twin[n], n++;
     snprintf(kv, sizeof kv, "bundle.model=%s", model);
     ov[n++] = kv;
+    if (extra) ov[n++] = extra;
     gal_scene sc;
     int st = gal_scene_load(&sc, "tests/bundle/drake_twin.ini", ov, n, NULL);
     CHECK(st == GAL_OK, "%s", gal_error_message());
@@ -117,7 +120,7 @@ static int twin_modes(const char *model, gal_modes *out)
 static void twin_selects(const char *model)
 {
     gal_modes md;
-    if (twin_modes(model, &md)) return;
+    if (twin_modes(model, NULL, &md)) return;
     int ta = -1, ts = -1, vs = -1;
     for (int k = 0; k < md.n; k++) {
         const gal_mode *m = md.mode + k;
@@ -148,6 +151,30 @@ static void twin_selects(const char *model)
 }
 
 static void test_twin_explicit(void) { twin_selects("explicit"); }
+
+/* Inclined (200 m up over 300 m): no mode is symmetric or antisymmetric any more (symmetry none),
+ * the partner is found by parity, the larger part's (README "Which modes are selected"). */
+static void test_twin_inclined(void)
+{
+    gal_modes md;
+    if (twin_modes("explicit", "span.height_difference=200", &md)) return;
+    int partners = 0, none = 0;
+    for (int k = 0; k < md.n; k++) {
+        const gal_mode *m = md.mode + k;
+        none += m->selected && m->symmetry == GAL_SYM_NONE;
+        if (!m->partner) continue;
+        partners++;
+        for (int i = 0; i < md.n; i++)
+            if (md.mode[i].index == m->partner)
+                CHECK(md.mode[i].family == GAL_FAMILY_VERTICAL && md.mode[i].parity == m->parity &&
+                      fabs(m->frequency_hz / md.mode[i].frequency_hz - 1) < 0.05, "partner %.4f Hz of %.4f Hz",
+                      m->frequency_hz, md.mode[i].frequency_hz);
+    }
+    printf("    inclined: %d selected modes of symmetry none, %d partner\n", none, partners);
+    CHECK(none >= 2 && partners == 1 && md.selected[GAL_FAMILY_TORSIONAL] == 2, "none %d, partners %d, torsional %d",
+          none, partners, md.selected[GAL_FAMILY_TORSIONAL]);
+    gal_modes_clear(&md);
+}
 static void test_twin_equivalent(void) { twin_selects("equivalent"); }
 
 /* A single iced Drake: its torsional modes (2.1 Hz, 4.2 Hz) are far above its vertical ones (0.46
@@ -216,6 +243,7 @@ int main(void)
     RUN(test_rule);
     RUN(test_twin_explicit);
     RUN(test_twin_equivalent);
+    RUN(test_twin_inclined);
     RUN(test_single);
     RUN(test_domain);
     return CHECK_SUMMARY();

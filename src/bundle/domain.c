@@ -17,7 +17,7 @@ int gal_bundle_equivalent_outside(const gal_scene *sc, const gal_modes *md, doub
     snprintf(msg, len, "the equivalent bundle is outside its measured domain: torsional mode %d (%s, %.4f Hz) is "
              "within %.1f%% of vertical mode %d (%.4f Hz, the nearest the galloping at %.4f Hz), closer than %.0f%%; "
              "such a bundle can rotate by tens of "
-             "degrees as it gallops, where the equivalent model's amplitudes were 27%% to 39%% off the explicit "
+             "degrees as it gallops, where the equivalent model's amplitudes were 22%% to 50%% off the explicit "
              "model's (README \"Bundles\"): check with bundle.model = explicit", mt->index,
              gal_symmetry_names[mt->parity], mt->frequency_hz, 100 * rel, mv->index, mv->frequency_hz, f_gallop,
              100 * GAL_EQUIVALENT_NEAR);

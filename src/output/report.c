@@ -200,9 +200,11 @@ void gal_report_modes_notes(FILE *fp, const gal_modes *md, const int want[GAL_FA
         for (int i = 0; i < md->n && m->partner; i++)
             if (md->mode[i].index == m->partner) v = md->mode + i;
         if (!v) continue;
-        fprintf(fp, "note: torsional mode %d (%s, %.6f Hz) added to the %d asked: the torsional mode of the "
-                "symmetry of vertical mode %d (%s, %.6f Hz) nearest it, within %.0f%% (galloping couples them)\n",
-                m->index, gal_symmetry_names[m->parity], m->frequency_hz, want[GAL_FAMILY_TORSIONAL], v->index,
+        /* the parity; "mostly" where the symmetry is none (an inclined span) */
+        fprintf(fp, "note: torsional mode %d (%s%s, %.6f Hz) added to the %d asked: the torsional mode of the "
+                "symmetry of vertical mode %d (%s%s, %.6f Hz) nearest it, within %.0f%% (galloping couples them)\n",
+                m->index, m->symmetry == GAL_SYM_NONE ? "mostly " : "", gal_symmetry_names[m->parity],
+                m->frequency_hz, want[GAL_FAMILY_TORSIONAL], v->index, v->symmetry == GAL_SYM_NONE ? "mostly " : "",
                 gal_symmetry_names[v->parity], v->frequency_hz, 100 * GAL_PARTNER_BAND);
     }
     for (int f = 0; f < 3; f++)

@@ -122,7 +122,7 @@ int gal_bundle_solve_model(const struct gal_model *m, gal_bundle **out, gal_mode
 /* The equivalent model's measured domain (README "Bundles", "When the equivalent model is good
  * enough"): a bundle whose selected vertical mode has its torsional partner within this fraction of
  * its frequency couples them near resonance and rotates by tens of degrees, where the equivalent
- * rod's amplitudes were 27% to 39% off the explicit model's (outside it: within 6%). */
+ * rod's amplitudes were 22% to 50% off the explicit model's (outside it: within 6%). */
 #define GAL_EQUIVALENT_NEAR 0.05
 /* 1 when the scene is an equivalent bundle outside that domain for a galloping at f_gallop Hz (the
  * selected vertical mode nearest it has its partner within GAL_EQUIVALENT_NEAR), with the warning in
