@@ -135,6 +135,7 @@ typedef struct gal_rom {
     long steps, newton_iterations, tangents, force_evaluations;
     int lin_ok;             /* the last Newton step converged within two passes (o.one_pass) */
     long halvings;          /* steps retried as two halves after Newton failed */
+    long linear_rejections; /* o.one_pass's linear steps refused (GAL_ROM_LINEAR_TOL): Newton instead */
     long element_evaluations;      /* energy elements of the rod evaluated by the steps (from the
                              * sample; an evaluation of the whole rod counts all of them) */
     long load_element_evaluations; /* the same for the elements of the aerodynamic loads */
@@ -177,6 +178,10 @@ gal_rom *gal_rom_setup_alloc(const gal_rod *rod, const double *q_eq, const gal_m
  * x = V^T M (q - q_eq). */
 int gal_rom_start(gal_rom *m, double t, const double *q, const double *v);
 #define GAL_ROM_HALVINGS 4 /* a step whose Newton fails is retried as two halves, this deep */
+/* o.one_pass: a linear step is taken only while the kept tangent predicts the internal force at
+ * the step's predictor within this share of the step's force scale (the Newton test's), else a
+ * Newton step from the state's own force (rom_step.c) */
+#define GAL_ROM_LINEAR_TOL 0.1
 
 /* One step of o.h (retried in halves, GAL_ROM_HALVINGS deep, when Newton fails or the rod
  * degenerates); GAL_EFAIL with time and reason when even the smallest fails. */
