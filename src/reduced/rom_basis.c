@@ -261,6 +261,7 @@ static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, dou
     m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
     m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);
     if (m->hyper && (st = gal_rom_hyper_loads(m))) return st;
+    gal_rom_reconstruct_at(m, NULL, NULL); /* every entry of m->q: the sample's evaluations write only theirs */
     if ((st = gal_rom_start(m, 0.0, m->q_eq, NULL))) return st;
     m->build_time_s = gal_wall_time() - t0;
     return GAL_OK;
