@@ -20,26 +20,38 @@
 
 enum { TERM_R, TERM_MA, TERM_CV, TERM_G, TERM_F, NTERM };
 
+/* The directions of the families at node i (the tangent t, the horizontal ey, the in-plane normal
+ * nv) from the equilibrium chord of its neighbours. */
+static void node_frame(const gal_rom *m, int i, double t[3], double ey[3], double nv[3])
+{
+    int nn = m->rod->nn, a = i > 0 ? i - 1 : i, b = i < nn - 1 ? i + 1 : i;
+    for (int k = 0; k < 3; k++) t[k] = m->q_eq[3 * b + k] - m->q_eq[3 * a + k], ey[k] = k == 1;
+    double lt = gal_norm3(t);
+    for (int k = 0; k < 3; k++) t[k] /= lt;
+    double ty = gal_dot3(ey, t);
+    for (int k = 0; k < 3; k++) ey[k] -= ty * t[k];
+    double ly = gal_norm3(ey);
+    for (int k = 0; k < 3; k++) ey[k] /= ly;
+    gal_cross3(t, ey, nv);
+}
+
+/* The first free dof of node i when its three translations are free, else -1. */
+static int node_dof(const gal_rod *rod, int i)
+{
+    int d0 = rod->dof[3 * i];
+    return d0 < 0 || rod->dof[3 * i + 1] != d0 + 1 || rod->dof[3 * i + 2] != d0 + 2 ? -1 : d0;
+}
+
 /* Accumulate sum w y z per family of the free-dof vectors y, z into acc[family] (w: the diagonal
  * weights, 1 when NULL). */
 static void accumulate(const gal_rom *m, const double *y, const double *z, const double *mdiag, double *acc)
 {
     const gal_rod *rod = m->rod;
-    int nn = rod->nn;
-    for (int i = 0; i < nn; i++) {
-        int d0 = rod->dof[3 * i];
-        if (d0 < 0 || rod->dof[3 * i + 1] != d0 + 1 || rod->dof[3 * i + 2] != d0 + 2) continue;
-        /* directions at node i from the equilibrium chord of its neighbours */
-        int a = i > 0 ? i - 1 : i, b = i < nn - 1 ? i + 1 : i;
-        double t[3], ey[3] = {0, 1, 0}, nv[3];
-        for (int k = 0; k < 3; k++) t[k] = m->q_eq[3 * b + k] - m->q_eq[3 * a + k];
-        double lt = gal_norm3(t);
-        for (int k = 0; k < 3; k++) t[k] /= lt;
-        double ty = gal_dot3(ey, t);
-        for (int k = 0; k < 3; k++) ey[k] -= ty * t[k];
-        double ly = gal_norm3(ey);
-        for (int k = 0; k < 3; k++) ey[k] /= ly;
-        gal_cross3(t, ey, nv);
+    for (int i = 0; i < rod->nn; i++) {
+        int d0 = node_dof(rod, i);
+        if (d0 < 0) continue;
+        double t[3], ey[3], nv[3];
+        node_frame(m, i, t, ey, nv);
         double yv = gal_dot3(nv, y + d0), yh = gal_dot3(ey, y + d0), ya = gal_dot3(t, y + d0);
         double zv = gal_dot3(nv, z + d0), zh = gal_dot3(ey, z + d0), za = gal_dot3(t, z + d0);
         double w = mdiag ? mdiag[d0] : 1;
@@ -49,9 +61,39 @@ static void accumulate(const gal_rom *m, const double *y, const double *z, const
     }
     if (rod->p.torsion)
         for (int j = 0; j < rod->p.elements; j++) {
-            int d = rod->dof[3 * nn + j];
+            int d = rod->dof[3 * rod->nn + j];
             if (d >= 0) acc[GAL_FAMILY_TORSIONAL] += y[d] * z[d] * (mdiag ? mdiag[d] : 1);
         }
+}
+
+/* The scale floor of each translational family (vertical, horizontal, axial; the twist's is
+ * rom_adapt.c's, 1 deg): the mass norm, in that family, of the displacement K0^-1 W_f that a load
+ * of GAL_ROM_CHECK_LOAD times the span's own weight per node, along the family's direction at each
+ * node, would cause (horizontally: the span swung by about that fraction of its sag). Below it a
+ * motion is no scale for the residual: a still span's round-off is no alarm, and a residual is an
+ * alarm only past the tolerance times the response to that load. 0 without gravity. load, du: n. */
+static int scale_floors(const gal_rom *m, double *load, double *du, double floor[GAL_FAMILY_COUNT])
+{
+    const gal_rod *rod = m->rod;
+    static const gal_family fam[3] = {GAL_FAMILY_VERTICAL, GAL_FAMILY_HORIZONTAL, GAL_FAMILY_AXIAL};
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) floor[f] = 0;
+    if (!(rod->p.gravity > 0)) return GAL_OK;
+    for (int k = 0; k < 3; k++) {
+        memset(load, 0, (size_t)m->ndof * sizeof(double));
+        for (int i = 0; i < rod->nn; i++) {
+            int d0 = node_dof(rod, i);
+            if (d0 < 0) continue;
+            double e[3][3], w = GAL_ROM_CHECK_LOAD * rod->mdiag[d0] * rod->p.gravity;
+            node_frame(m, i, e[2], e[1], e[0]); /* vertical, horizontal, axial */
+            for (int c = 0; c < 3; c++) load[d0 + c] = w * e[k][c];
+        }
+        int st = gal_chol_solve(m->chol0, load, du);
+        if (st) return st;
+        double acc[GAL_FAMILY_COUNT] = {0};
+        accumulate(m, du, du, rod->mdiag, acc);
+        floor[fam[k]] = sqrt(acc[fam[k]]);
+    }
+    return GAL_OK;
 }
 
 int gal_rom_residual(gal_rom *m, gal_rom_check *chk)
@@ -90,8 +132,10 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     accumulate(m, y[TERM_R], y[TERM_R], rod->mdiag, acc[0]);
     accumulate(m, y[TERM_MA], y[TERM_MA], rod->mdiag, acc[1]);
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) total += acc[1][f];
+    double floor[GAL_FAMILY_COUNT];
+    if ((st = scale_floors(m, y[TERM_G], y[TERM_F], floor))) goto done;
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) {
-        double scale = fmax(sqrt(acc[1][f]), 0.02 * sqrt(total));
+        double scale = fmax(fmax(sqrt(acc[1][f]), 0.02 * sqrt(total)), floor[f]);
         chk->err[f] = sqrt(acc[0][f]), chk->disp[f] = sqrt(acc[1][f]), chk->scale[f] = scale;
         chk->rel[f] = scale > 0 ? sqrt(acc[0][f]) / scale : 0;
         chk->max = fmax(chk->max, chk->rel[f]);

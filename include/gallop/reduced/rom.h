@@ -96,7 +96,13 @@ typedef struct gal_rom_opts {
  * residual R at a reconstructed state turned into the displacement that would correct it,
  * du = K0^-1 R, measured in the mass norm (|u|^2 = sum m_d u_d^2, the same unit for twist and
  * translation) and set against the family's own displacement from the equilibrium (at least 2% of
- * the whole motion's): a relative amplitude error. */
+ * the whole motion's, and at least the floor below): a relative amplitude error. */
+/* The scale's floor in the vertical, horizontal and axial families: the displacement K0^-1 W that
+ * a load of this fraction of the span's own weight along the family would cause (rom_check.c).
+ * About the drag of a 1 m/s breeze on a bare conductor (Drake: 0.017 N/m against a weight of
+ * 16 N/m), far below any wind that gallops a span: a motion smaller than its response is no
+ * scale, so the round-off of a still span is no alarm. */
+#define GAL_ROM_CHECK_LOAD 1e-3
 typedef struct gal_rom_check {
     double rel[GAL_FAMILY_COUNT];
     double max;             /* the largest of rel */
