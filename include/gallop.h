@@ -54,6 +54,7 @@
 #include "gallop/analysis/onset.h"
 #include "gallop/analysis/accuracy.h"
 #include "gallop/analysis/measure.h"
+#include "gallop/analysis/compare.h"
 #include "gallop/analysis/trace_spectrum.h"
 #include "gallop/analysis/windstats.h"
 #include "gallop/analysis/cigre.h"

@@ -152,23 +152,16 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle_si
 int gal_bundle_write_compare(const char *dir, const gal_scene *sc, const gal_bundle_sim_result *full,
                              const gal_bundle_sim_result *red, gal_compare_figures *out)
 {
-    gal_sim_measures mf, mr;
-    int st = gal_sim_measure(&full->c, gal_sim_mid_probe(&full->c), -1, &mf);
-    if (!st) st = gal_sim_measure(&red->c, gal_sim_mid_probe(&red->c), mf.steady_from_s, &mr);
+    gal_compare_figures c; /* analysis/compare.c: every probe, each family's headline where it moves most */
+    int st = gal_compare_runs(&full->c, &red->c, -1, &c);
     if (st) return st;
-    gal_compare_figures c;
-    c.frequency_error = relerr(mr.frequency_hz[1], mf.frequency_hz[1]);
-    c.err_vertical = relerr(mr.peak_to_peak[1], mf.peak_to_peak[1]);
-    c.err_horizontal = relerr(mr.peak_to_peak[0], mf.peak_to_peak[0]);
-    c.err_twist = relerr(mr.peak_to_peak[3], mf.peak_to_peak[3]);
-    c.amplitude_error = fmax(c.err_vertical, fmax(c.err_horizontal, c.err_twist));
-    c.speedup = full->c.wall_time_s / red->c.wall_time_s;
+    const gal_sim_measures *mf = &c.full, *mr = &c.reduced;
     if (out) *out = c;
     gal_outset *o;
     st = gal_outset_begin(&o, dir, "compare");
     if (!st) st = gal_outset_scene(o, sc);
     if (!st) st = write_csv(o, full, red);
-    if (!st) st = write_summary(o, sc, full, red, &mf, &mr, &c);
+    if (!st) st = write_summary(o, sc, full, red, mf, mr, &c);
     if (!st) st = gal_outset_commit(o);
     gal_outset_free(o);
     return st;

@@ -40,16 +40,11 @@ static int report(const char *outdir, const gal_scene *sc, const gal_bundle_sim_
     gal_compare_figures c;
     int st = gal_bundle_write_compare(outdir, sc, F, R, &c);
     if (st) return st;
-    gal_sim_measures mf, mr;
-    gal_sim_measure(&F->c, gal_sim_mid_probe(&F->c), -1, &mf);
-    gal_sim_measure(&R->c, gal_sim_mid_probe(&R->c), mf.steady_from_s, &mr);
     printf("explicit bundle of %d, %d dofs; reduced basis %d, self-check residual_max %.3g (%s)\n", F->n, F->ndof,
            R->c.basis, R->c.residual_max, R->c.valid ? "valid" : "NOT valid");
-    print_run("full", F, &mf);
-    print_run("reduced", R, &mr);
-    printf("frequency error %.3g%%, amplitude errors: vertical %.3g%%, horizontal %.3g%%, rotation %.3g%%; speedup "
-           "%.2fx (reduced model's own set-up %.3f s)\n", 100 * c.frequency_error, 100 * c.err_vertical,
-           100 * c.err_horizontal, 100 * c.err_twist, c.speedup, R->c.build_time_s);
+    print_run("full", F, &c.full);
+    print_run("reduced", R, &c.reduced);
+    gal_cli_print_compare(&c, "rotation", R->c.build_time_s);
     printf("files: %s/{compare.csv,summary.json}\n", outdir);
     if (!R->c.valid)
         fprintf(stderr, "gallop compare: warning: the reduced model's residual reached %.3g, past "

@@ -23,6 +23,10 @@ int gal_cli_modes_bundle(const struct gal_scene *sc, const char *outdir);
 int gal_cli_simulate_bundle(const struct gal_scene *sc, const char *outdir, int reduced);
 /* `gallop compare` of an explicit bundle (src/cli/bundle_compare.c) */
 int gal_cli_compare_bundle(const struct gal_scene *sc, const char *outdir);
+/* compare's figures on stdout: the headline (each family at its probe) and, with more than one
+ * probe, every probe's errors; twist names the twist column ("twist", "rotation") */
+struct gal_compare_figures;
+void gal_cli_print_compare(const struct gal_compare_figures *c, const char *twist, double setup_s);
 
 /* ---- the commands and their options (src/cli/usage.c) ---- */
 #include <stdio.h>

@@ -166,3 +166,27 @@ int gal_cli_load_scene(int argc, char **argv, gal_scene *sc, const char **outdir
 {
     return gal_cli_load_scene_opts(argc, argv, sc, outdir, NULL, NULL);
 }
+
+void gal_cli_print_compare(const gal_compare_figures *c, const char *twist, double setup_s)
+{
+    const gal_compare_probe *p = c->probe;
+    const int *h = c->headline;
+    printf("frequency error %.3g%%, amplitude errors: vertical %.3g%%, horizontal %.3g%%, %s %.3g%%; speedup %.2fx "
+           "(reduced model's own set-up %.3f s)\n", 100 * c->frequency_error, 100 * c->err_vertical,
+           100 * c->err_horizontal, twist, 100 * c->err_twist, c->speedup, setup_s);
+    if (!c->full_steady)
+        fprintf(stderr, "gallop compare: warning: the full model is not steady over the window (vertical "
+                "peak-to-peak at %g of the span %.4g m in its first half, %.4g m in its second, %.3g%% apart: "
+                "still growing, decaying or bursting): the runs are compared in a transient; lengthen "
+                "simulation.duration (or check that the span gallops)\n", p[h[0]].position, c->window_pp_first,
+                c->window_pp_second, 100 * c->window_drift);
+    if (c->nprobe < 2) return;
+    printf("headline at the full model's largest peak-to-peak: vertical at %g, horizontal at %g, %s at %g of the "
+           "span\n",
+           p[h[0]].position, p[h[1]].position, twist, p[h[2]].position);
+    for (int k = 0; k < c->nprobe; k++)
+        printf("  probe %-5g full vertical p-p %.4g m at %.4g Hz, reduced %.4g m at %.4g Hz; errors: frequency %.3g%%, "
+               "vertical %.3g%%, horizontal %.3g%%, %s %.3g%%\n", p[k].position, p[k].full.peak_to_peak[1],
+               p[k].full.frequency_hz[1], p[k].reduced.peak_to_peak[1], p[k].reduced.frequency_hz[1],
+               100 * p[k].frequency_error, 100 * p[k].err[0], 100 * p[k].err[1], twist, 100 * p[k].err[2]);
+}

@@ -135,17 +135,12 @@ int gal_cli_compare(int argc, char **argv)
     gal_compare_figures c;
     if (!st) st = gal_sim_write_compare(outdir, &sc, &full, &red, &c);
     if (!st) {
-        gal_sim_measures mf, mr;
-        gal_sim_measure(&full, gal_sim_mid_probe(&full), -1, &mf);
-        gal_sim_measure(&red, gal_sim_mid_probe(&red), mf.steady_from_s, &mr);
-        print_run("full", &full, &mf);
-        print_run("reduced", &red, &mr);
-        printf("frequency error %.3g%%, amplitude errors: vertical %.3g%%, horizontal %.3g%%, twist %.3g%%; "
-               "speedup %.1fx (reduced model's own set-up %.3f s)\n", 100 * c.frequency_error, 100 * c.err_vertical,
-               100 * c.err_horizontal, 100 * c.err_twist, c.speedup, red.build_time_s);
+        print_run("full", &full, &c.full);
+        print_run("reduced", &red, &c.reduced);
+        gal_cli_print_compare(&c, "twist", red.build_time_s);
         printf("files: %s/{compare.csv,summary.json}\n", outdir);
         warn_invalid("compare", &sc, &red);
-        warn_domain("compare", &sc, d, mf.frequency_hz[1]);
+        warn_domain("compare", &sc, d, c.full.frequency_hz[1]);
     }
     gal_sim_result_clear(&full);
     gal_sim_result_clear(&red);

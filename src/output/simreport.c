@@ -1,6 +1,6 @@
 /* simreport.c: the files of a galloping run, each command's as one output set (outset.h):
  * trace.csv and summary.json of `gallop simulate` (the measures of analysis/measure.c),
- * compare.csv and summary.json of `gallop compare`. */
+ * compare.csv and summary.json of `gallop compare` (the figures of analysis/compare.c). */
 #include "gallop/output/simreport.h"
 #include "gallop/base/core.h"
 #include "gallop/output/cigrereport.h"
@@ -202,42 +202,81 @@ int gal_sim_write_trace(const char *path, const gal_sim_result *res)
     return gal_ofile_close(&f, 1);
 }
 
-static double relerr(double a, double b)
-{
-    return fabs(a - b) / fmax(fabs(b), 1e-300);
-}
-
-/* the figures of the comparison at mid-span over the full model's steady window */
-static int compare_figures(const gal_sim_result *full, const gal_sim_result *red, gal_sim_measures *mf,
-                           gal_sim_measures *mr, gal_compare_figures *c)
-{
-    int st = gal_sim_measure(full, gal_sim_mid_probe(full), -1, mf);
-    if (!st) st = gal_sim_measure(red, gal_sim_mid_probe(red), mf->steady_from_s, mr); /* the same window */
-    if (st) return st;
-    c->frequency_error = relerr(mr->frequency_hz[1], mf->frequency_hz[1]);
-    c->err_vertical = relerr(mr->peak_to_peak[1], mf->peak_to_peak[1]);
-    c->err_horizontal = relerr(mr->peak_to_peak[0], mf->peak_to_peak[0]);
-    c->err_twist = relerr(mr->peak_to_peak[3], mf->peak_to_peak[3]);
-    c->amplitude_error = fmax(c->err_vertical, fmax(c->err_horizontal, c->err_twist));
-    double dur = full->time[full->nsamples - 1];
-    c->speedup = (full->wall_time_s / dur) / (red->wall_time_s / dur);
-    return GAL_OK;
-}
-
-static int write_compare_csv(gal_outset *o, const gal_sim_result *full, const gal_sim_result *red)
+/* compare.csv: the headline columns (each family at its headline probe, compare.h), then every
+ * probe's under the trace's names p<a>_..., prefixed full_ and reduced_ */
+static int write_compare_csv(gal_outset *o, const gal_sim_result *full, const gal_sim_result *red,
+                             const gal_compare_figures *c)
 {
     FILE *fp = gal_outset_open(o, "compare.csv");
     if (!fp) return GAL_EIO;
-    int kf = gal_sim_mid_probe(full), kr = gal_sim_mid_probe(red);
-    int wf = 4 * full->nprobe, wr = 4 * red->nprobe;
+    static const int comp[3] = {1, 0, 3};
+    static const char *const name[3] = {"vertical_m", "horizontal_m", "twist_deg"};
+    int wf = 4 * full->nprobe, wr = 4 * red->nprobe, td = time_decimals(full->dt_out);
     fprintf(fp, "time_s,full_vertical_m,reduced_vertical_m,full_horizontal_m,reduced_horizontal_m,"
-                "full_twist_deg,reduced_twist_deg\n");
+                "full_twist_deg,reduced_twist_deg");
+    for (int k = 0; k < c->nprobe; k++)
+        for (int f = 0; f < 3; f++)
+            fprintf(fp, ",full_p%g_%s,reduced_p%g_%s", full->probe[k], name[f], full->probe[k], name[f]);
+    fputc('\n', fp);
     long n = full->nsamples < red->nsamples ? full->nsamples : red->nsamples;
     for (long i = 0; i < n; i++) {
-        const double *a = full->trace + (size_t)i * wf + 4 * kf, *b = red->trace + (size_t)i * wr + 4 * kr;
-        fprintf(fp, "%.*f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g\n", time_decimals(full->dt_out), full->time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
+        const double *a = full->trace + (size_t)i * wf, *b = red->trace + (size_t)i * wr;
+        fprintf(fp, "%.*f", td, full->time[i]);
+        for (int f = 0; f < 3; f++) {
+            int k = 4 * c->headline[f] + comp[f];
+            fprintf(fp, ",%.8g,%.8g", a[k], b[k]);
+        }
+        for (int k = 0; k < c->nprobe; k++)
+            for (int f = 0; f < 3; f++) fprintf(fp, ",%.8g,%.8g", a[4 * k + comp[f]], b[4 * k + comp[f]]);
+        fputc('\n', fp);
     }
     return gal_outset_close(o, fp);
+}
+
+/* one run's measures at one probe, as an object's members */
+static void json_probe_run(gal_json *j, const char *key, const gal_sim_measures *m)
+{
+    gal_json_key(j, key);
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "frequency_hz", m->frequency_hz[1]);
+    gal_json_kv_num(j, "vertical_peak_to_peak_m", m->peak_to_peak[1]);
+    gal_json_kv_num(j, "horizontal_peak_to_peak_m", m->peak_to_peak[0]);
+    gal_json_kv_num(j, "twist_peak_to_peak_deg", m->peak_to_peak[3]);
+    gal_json_obj_end(j);
+}
+
+/* headline_probes and probes (the per-probe figures) */
+static void json_compare_probes(gal_json *j, const gal_compare_figures *c)
+{
+    static const char *const fam[GAL_CMP_FAMILIES] = {"vertical", "horizontal", "twist"};
+    gal_json_key(j, "full_window"); /* the reference's steadiness over the window (compare.h) */
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "vertical_peak_to_peak_first_half_m", c->window_pp_first);
+    gal_json_kv_num(j, "vertical_peak_to_peak_second_half_m", c->window_pp_second);
+    gal_json_kv_num(j, "drift", c->window_drift);
+    gal_json_key(j, "steady");
+    gal_json_bool(j, c->full_steady);
+    gal_json_obj_end(j);
+    gal_json_key(j, "headline_probes");
+    gal_json_obj_begin(j);
+    for (int f = 0; f < GAL_CMP_FAMILIES; f++) gal_json_kv_num(j, fam[f], c->probe[c->headline[f]].position);
+    gal_json_obj_end(j);
+    gal_json_key(j, "probes");
+    gal_json_arr_begin(j);
+    for (int k = 0; k < c->nprobe; k++) {
+        const gal_compare_probe *p = c->probe + k;
+        gal_json_obj_begin(j);
+        gal_json_kv_num(j, "position", p->position);
+        json_probe_run(j, "full", &p->full);
+        json_probe_run(j, "reduced", &p->reduced);
+        gal_json_kv_num(j, "frequency_error", p->frequency_error);
+        gal_json_key(j, "amplitude_errors");
+        gal_json_obj_begin(j);
+        for (int f = 0; f < GAL_CMP_FAMILIES; f++) gal_json_kv_num(j, fam[f], p->err[f]);
+        gal_json_obj_end(j);
+        gal_json_obj_end(j);
+    }
+    gal_json_arr_end(j);
 }
 
 void gal_compare_figures_json(gal_json *j, const gal_compare_figures *c)
@@ -251,25 +290,25 @@ void gal_compare_figures_json(gal_json *j, const gal_compare_figures *c)
     gal_json_kv_num(j, "twist", c->err_twist);
     gal_json_obj_end(j);
     gal_json_kv_num(j, "speedup", c->speedup);
+    json_compare_probes(j, c);
 }
 
 static int write_compare_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *full,
-                                 const gal_sim_result *red, const gal_sim_measures *mf, const gal_sim_measures *mr,
-                                 const gal_compare_figures *c)
+                                 const gal_sim_result *red, const gal_compare_figures *c)
 {
     gal_json *j = gal_outset_summary(o);
     if (!j) return GAL_EIO;
     gal_json_kv_str(j, "command", "compare");
     gal_json_kv_str(j, "scene", sc->path);
     gal_json_kv_num(j, "duration_s", full->time[full->nsamples - 1]);
-    gal_json_kv_num(j, "steady_from_s", mf->steady_from_s);
+    gal_json_kv_num(j, "steady_from_s", c->full.steady_from_s);
     gal_json_key(j, "full");
     gal_json_obj_begin(j);
-    json_run(j, full, mf);
+    json_run(j, full, &c->full);
     gal_json_obj_end(j);
     gal_json_key(j, "reduced");
     gal_json_obj_begin(j);
-    json_run(j, red, mr);
+    json_run(j, red, &c->reduced);
     gal_json_obj_end(j);
     gal_compare_figures_json(j, c);
     return GAL_OK;
@@ -278,16 +317,15 @@ static int write_compare_summary(gal_outset *o, const gal_scene *sc, const gal_s
 int gal_sim_write_compare(const char *dir, const gal_scene *sc, const gal_sim_result *full,
                           const gal_sim_result *red, gal_compare_figures *out)
 {
-    gal_sim_measures mf, mr;
     gal_compare_figures c;
-    int st = compare_figures(full, red, &mf, &mr, &c);
+    int st = gal_compare_runs(full, red, -1, &c);
     if (st) return st;
     if (out) *out = c;
     gal_outset *o;
     st = gal_outset_begin(&o, dir, "compare");
     if (!st) st = gal_outset_scene(o, sc);
-    if (!st) st = write_compare_csv(o, full, red);
-    if (!st) st = write_compare_summary(o, sc, full, red, &mf, &mr, &c);
+    if (!st) st = write_compare_csv(o, full, red, &c);
+    if (!st) st = write_compare_summary(o, sc, full, red, &c);
     if (!st) st = gal_outset_commit(o);
     gal_outset_free(o);
     return st;

@@ -6,20 +6,17 @@
 #include "gallop/scene/scene.h"
 #include "gallop/run/sim.h"
 #include "gallop/analysis/measure.h"
+#include "gallop/analysis/compare.h"
 #include "gallop/output/json.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-typedef struct gal_compare_figures {
-    double frequency_error, amplitude_error;        /* relative; amplitude: the worst of the three */
-    double err_vertical, err_horizontal, err_twist;
-    double speedup;                                  /* full over reduced wall time per simulated second */
-} gal_compare_figures;
-
 /* compare's summary.json figures into the open object of j: frequency_error, amplitude_error,
- * amplitude_errors {vertical, horizontal, twist}, speedup (the single rod's and the bundle's). */
+ * amplitude_errors {vertical, horizontal, twist}, speedup (the headline, compare.h), then
+ * headline_probes {vertical, horizontal, twist} (their positions) and probes: per probe
+ * both runs' measures and their errors (the single rod's and the bundle's). */
 void gal_compare_figures_json(gal_json *j, const gal_compare_figures *c);
 
 /* DIR/trace.csv and DIR/summary.json of `gallop simulate`, one output set. */

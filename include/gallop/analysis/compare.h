@@ -1,0 +1,57 @@
+/* compare.h: the figures of `gallop compare` (the single rod's and the explicit bundle's): the
+ * full and the reduced run measured at every probe over one window, and per family (vertical,
+ * horizontal, twist) a headline taken at the probe where the full model's peak-to-peak is
+ * largest (an antisymmetric galloping barely moves mid-span). */
+#ifndef GALLOP_ANALYSIS_COMPARE_H
+#define GALLOP_ANALYSIS_COMPARE_H
+
+#include "gallop/analysis/measure.h"
+#include "gallop/run/sim.h"
+#include "gallop/scene/scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* the families of the headline, in this order: vertical, horizontal, twist */
+enum { GAL_CMP_VERTICAL, GAL_CMP_HORIZONTAL, GAL_CMP_TWIST, GAL_CMP_FAMILIES };
+
+typedef struct gal_compare_probe {
+    double position;                   /* fraction of the span */
+    gal_sim_measures full, reduced;    /* over the common window */
+    double frequency_error;            /* relative, of the vertical dominant frequency */
+    double err[GAL_CMP_FAMILIES];      /* relative peak-to-peak errors: vertical, horizontal, twist */
+} gal_compare_probe;
+
+typedef struct gal_compare_figures {
+    /* the headline: each family at its probe (headline[]); frequency_error the vertical dominant
+     * frequency at the vertical headline probe; amplitude_error the worst of the three */
+    double frequency_error, amplitude_error;
+    double err_vertical, err_horizontal, err_twist;
+    double speedup;                    /* full over reduced wall time (per simulated second) */
+    int headline[GAL_CMP_FAMILIES];    /* probe index of each family's headline */
+    /* both runs' measures as one record: those of the vertical headline probe, with the
+     * horizontal and twist frequency and amplitude taken at their own headline probes */
+    gal_sim_measures full, reduced;
+    /* is the reference steady over the window? the full run's vertical peak-to-peak at the vertical
+     * headline probe in the window's first and second halves, and their relative difference;
+     * steady when it is at most GAL_CMP_STEADY_DRIFT (a run still in its transient, or bursting,
+     * compares two transients: their figures say nothing of the reduced model's accuracy) */
+    double window_pp_first, window_pp_second, window_drift;
+    int full_steady;
+    int nprobe;
+    gal_compare_probe probe[GAL_MAX_PROBES];
+} gal_compare_figures;
+
+#define GAL_CMP_STEADY_DRIFT 0.05
+
+/* Measure both runs at every probe over one window and fill *c. The window is the full run's
+ * steady part detected at the probe of largest full vertical peak-to-peak (from >= 0: from that
+ * time instead). The runs must share their probes. */
+int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, double from, gal_compare_figures *c);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,101 @@
+/* compare.c: the figures of `gallop compare` (compare.h): both runs at every probe over the full
+ * run's steady window, and per family the probe where the full model moves most. */
+#include "gallop/analysis/compare.h"
+#include "gallop/base/core.h"
+#include "gallop/base/error.h"
+
+#include <math.h>
+#include <string.h>
+
+/* the measures' component of each family: vertical, horizontal, twist */
+static const int comp_of[GAL_CMP_FAMILIES] = {1, 0, 3};
+
+static double relerr(double a, double b)
+{
+    return fabs(a - b) / fmax(fabs(b), 1e-300);
+}
+
+/* the probe of largest full peak-to-peak in component comp; mid-span unless another is larger */
+static int largest(const gal_compare_figures *c, int mid, int comp)
+{
+    int best = mid;
+    for (int k = 0; k < c->nprobe; k++)
+        if (c->probe[k].full.peak_to_peak[comp] > c->probe[best].full.peak_to_peak[comp]) best = k;
+    return best;
+}
+
+/* the window: the full run's steady part at the probe of largest vertical motion */
+static int window_from(const gal_sim_result *full, int mid, double *from)
+{
+    double best = -1;
+    for (int k = 0; k < full->nprobe; k++) {
+        gal_sim_measures m;
+        int st = gal_sim_measure(full, k, -1, &m);
+        if (st) return st;
+        if (m.peak_to_peak[1] > best || (k == mid && m.peak_to_peak[1] >= best))
+            best = m.peak_to_peak[1], *from = m.steady_from_s;
+    }
+    return GAL_OK;
+}
+
+/* peak-to-peak of component comp of probe k over samples [i0, i1) */
+static double pp_of(const gal_sim_result *r, int k, int comp, long i0, long i1)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (long i = i0; i < i1; i++) {
+        double x = r->trace[(size_t)i * 4 * r->nprobe + 4 * k + comp];
+        lo = fmin(lo, x), hi = fmax(hi, x);
+    }
+    return i1 > i0 ? hi - lo : NAN;
+}
+
+/* the full run's steadiness over the window, at the vertical headline probe */
+static void window_drift(const gal_sim_result *full, gal_compare_figures *c)
+{
+    long n = full->nsamples, i0 = (long)floor(c->full.steady_from_s / full->dt_out + 0.5);
+    if (i0 < 0) i0 = 0;
+    if (i0 > n) i0 = n;
+    long ih = i0 + (n - i0) / 2;
+    int k = c->headline[GAL_CMP_VERTICAL];
+    double a = pp_of(full, k, 1, i0, ih), b = pp_of(full, k, 1, ih, n);
+    c->window_pp_first = a, c->window_pp_second = b;
+    c->window_drift = fabs(a - b) / fmax(fmax(a, b), 1e-300);
+    c->full_steady = c->window_drift <= GAL_CMP_STEADY_DRIFT;
+}
+
+int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, double from, gal_compare_figures *c)
+{
+    memset(c, 0, sizeof *c);
+    if (full->nprobe != red->nprobe || full->nprobe < 1)
+        return gal_error(GAL_EINPUT, "compare: the runs have %d and %d probes", full->nprobe, red->nprobe);
+    int mid = gal_sim_mid_probe(full), st = GAL_OK;
+    if (from < 0 && (st = window_from(full, mid, &from))) return st;
+    c->nprobe = full->nprobe;
+    for (int k = 0; k < c->nprobe && !st; k++) {
+        gal_compare_probe *p = c->probe + k;
+        p->position = full->probe[k];
+        st = gal_sim_measure(full, k, from, &p->full);
+        if (!st) st = gal_sim_measure(red, k, p->full.steady_from_s, &p->reduced);
+        p->frequency_error = relerr(p->reduced.frequency_hz[1], p->full.frequency_hz[1]);
+        for (int f = 0; f < GAL_CMP_FAMILIES; f++)
+            p->err[f] = relerr(p->reduced.peak_to_peak[comp_of[f]], p->full.peak_to_peak[comp_of[f]]);
+    }
+    if (st) return st;
+    for (int f = 0; f < GAL_CMP_FAMILIES; f++) c->headline[f] = largest(c, mid, comp_of[f]);
+    const gal_compare_probe *pv = c->probe + c->headline[GAL_CMP_VERTICAL];
+    c->full = pv->full, c->reduced = pv->reduced;
+    for (int f = GAL_CMP_HORIZONTAL; f < GAL_CMP_FAMILIES; f++) {
+        const gal_compare_probe *p = c->probe + c->headline[f];
+        int j = comp_of[f];
+        c->full.frequency_hz[j] = p->full.frequency_hz[j], c->full.peak_to_peak[j] = p->full.peak_to_peak[j];
+        c->reduced.frequency_hz[j] = p->reduced.frequency_hz[j], c->reduced.peak_to_peak[j] = p->reduced.peak_to_peak[j];
+    }
+    c->frequency_error = pv->frequency_error;
+    c->err_vertical = pv->err[GAL_CMP_VERTICAL];
+    c->err_horizontal = c->probe[c->headline[GAL_CMP_HORIZONTAL]].err[GAL_CMP_HORIZONTAL];
+    c->err_twist = c->probe[c->headline[GAL_CMP_TWIST]].err[GAL_CMP_TWIST];
+    c->amplitude_error = fmax(c->err_vertical, fmax(c->err_horizontal, c->err_twist));
+    c->speedup = full->wall_time_s / red->wall_time_s;
+    window_drift(full, c);
+    return GAL_OK;
+}

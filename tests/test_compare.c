@@ -1,0 +1,138 @@
+/* test_compare.c: compare's figures (analysis/compare.h) on synthetic traces of two probes,
+ * mid-span and quarter span: an antisymmetric galloping (quarter span moves, mid-span only at an
+ * incidental frequency) takes its headline at the quarter, a symmetric one at mid-span, each
+ * family at its own probe; every probe's errors are kept; a reference still in its transient
+ * (or bursting) over the window is said to be unsteady. */
+#include "check.h"
+#include "gallop.h"
+
+#define NS 6000
+#define DT 0.05
+#define PI 3.14159265358979323846
+
+/* one run: per probe (mid 0.5, quarter 0.25) a sine per component: amplitude, frequency */
+typedef struct { double a[2][4], f[2][4]; double decay; } synth;
+
+static int make_run(gal_sim_result *r, const synth *s, gal_model_kind kind)
+{
+    memset(r, 0, sizeof *r);
+    r->kind = kind, r->nprobe = 2, r->probe[0] = 0.5, r->probe[1] = 0.25;
+    r->nsamples = NS, r->dt_out = DT, r->wall_time_s = kind == GAL_MODEL_FULL ? 10 : 1;
+    r->time = malloc(NS * sizeof(double));
+    r->trace = malloc(NS * 8 * sizeof(double));
+    r->tension = malloc(NS * 2 * sizeof(double));
+    if (!r->time || !r->trace || !r->tension) return 1;
+    for (long i = 0; i < NS; i++) {
+        double t = i * DT, g = 1 - s->decay * t / (NS * DT); /* decay: a slow change of the amplitude */
+        r->time[i] = t;
+        for (int k = 0; k < 2; k++)
+            for (int c = 0; c < 4; c++)
+                r->trace[i * 8 + 4 * k + c] = g * s->a[k][c] * sin(2 * PI * s->f[k][c] * t + 0.3 * c);
+        r->tension[2 * i] = r->tension[2 * i + 1] = 25000 + 100 * sin(2 * PI * 0.5 * t);
+    }
+    return 0;
+}
+
+static void free_run(gal_sim_result *r)
+{
+    free(r->time), free(r->trace), free(r->tension);
+}
+
+/* crescent_condor's pattern: the galloping at the quarter (vertical, horizontal), mid-span
+ * vertical small at twice the frequency, the twist largest at mid-span */
+static synth antisym(double quarter_scale, double mid_f)
+{
+    synth s;
+    memset(&s, 0, sizeof s);
+    double f = 0.25;
+    s.a[1][1] = 2.0 * quarter_scale, s.f[1][1] = f;      /* quarter vertical, p-p 4 m */
+    s.a[1][0] = 0.8 * quarter_scale, s.f[1][0] = f;      /* quarter horizontal */
+    s.a[1][3] = 25, s.f[1][3] = f;                       /* quarter twist */
+    s.a[0][1] = 0.2, s.f[0][1] = mid_f;                  /* mid vertical, incidental */
+    s.a[0][0] = 0.05, s.f[0][0] = mid_f;
+    s.a[0][3] = 35, s.f[0][3] = 2 * f;                   /* mid twist, the largest */
+    return s;
+}
+
+static void test_antisymmetric(void)
+{
+    gal_sim_result F, R;
+    synth sf = antisym(1, 0.5), sr = antisym(0.7, 0.6);  /* the reduced: 30% low at the quarter */
+    sr.a[0][3] = 36;
+    if (make_run(&F, &sf, GAL_MODEL_FULL) || make_run(&R, &sr, GAL_MODEL_REDUCED)) { CHECK(0, "out of memory"); return; }
+    gal_compare_figures c;
+    CHECK(gal_compare_runs(&F, &R, -1, &c) == GAL_OK, "%s", gal_error_message());
+    printf("    headline probes %g %g %g; errors: frequency %.4f, vertical %.4f, horizontal %.4f, twist %.4f; "
+           "mid-span: frequency %.4f, vertical %.4f\n", c.probe[c.headline[0]].position, c.probe[c.headline[1]].position,
+           c.probe[c.headline[2]].position, c.frequency_error, c.err_vertical, c.err_horizontal, c.err_twist,
+           c.probe[0].frequency_error, c.probe[0].err[0]);
+    CHECK(c.nprobe == 2 && c.headline[GAL_CMP_VERTICAL] == 1 && c.headline[GAL_CMP_HORIZONTAL] == 1 &&
+          c.headline[GAL_CMP_TWIST] == 0, "headline probes %d %d %d", c.headline[0], c.headline[1], c.headline[2]);
+    CHECK_NEAR(c.err_vertical, 0.3, 0.02);     /* the quarter's 30%, not mid-span's 0 */
+    CHECK_NEAR(c.err_horizontal, 0.3, 0.02);
+    CHECK_NEAR(c.err_twist, 1.0 / 35, 0.01);   /* the twist at mid-span, its largest */
+    CHECK(c.frequency_error < 0.01, "frequency error %g at the quarter (same frequency)", c.frequency_error);
+    CHECK_NEAR(c.amplitude_error, fmax(c.err_vertical, fmax(c.err_horizontal, c.err_twist)), 1e-15);
+    /* every probe kept: mid-span's incidental 0.5 vs 0.6 Hz */
+    CHECK_NEAR(c.probe[0].frequency_error, 0.2, 0.03);
+    CHECK(c.probe[0].err[0] < 0.02, "mid-span vertical error %g", c.probe[0].err[0]);
+    /* the runs' records: the vertical at the quarter, the twist at mid-span */
+    CHECK_NEAR(c.full.peak_to_peak[1], 4.0, 0.05);
+    CHECK_NEAR(c.full.peak_to_peak[3], 70.0, 1.0);
+    CHECK_NEAR(c.full.frequency_hz[1], 0.25, 0.01);
+    CHECK(c.full_steady && c.window_drift < 0.01, "steady sines: drift %g", c.window_drift);
+    CHECK_NEAR(c.speedup, 10, 1e-12);
+    free_run(&F), free_run(&R);
+}
+
+/* a symmetric galloping: everything largest at mid-span, the headline the mid-span figures */
+static void test_symmetric(void)
+{
+    synth sf, sr;
+    memset(&sf, 0, sizeof sf);
+    for (int c = 0; c < 4; c++) sf.a[0][c] = 1 + c, sf.f[0][c] = 0.3, sf.a[1][c] = 0.7 * (1 + c), sf.f[1][c] = 0.3;
+    sr = sf;
+    for (int c = 0; c < 4; c++) sr.a[0][c] *= 1.02, sr.a[1][c] *= 0.9;
+    gal_sim_result F, R;
+    if (make_run(&F, &sf, GAL_MODEL_FULL) || make_run(&R, &sr, GAL_MODEL_REDUCED)) { CHECK(0, "out of memory"); return; }
+    gal_compare_figures c;
+    CHECK(gal_compare_runs(&F, &R, -1, &c) == GAL_OK, "%s", gal_error_message());
+    CHECK(c.headline[0] == 0 && c.headline[1] == 0 && c.headline[2] == 0, "headline %d %d %d", c.headline[0],
+          c.headline[1], c.headline[2]);
+    CHECK(c.err_vertical == c.probe[0].err[0] && c.err_twist == c.probe[0].err[2], "mid-span figures");
+    CHECK_NEAR(c.err_vertical, 0.02, 0.005);
+    CHECK_NEAR(c.probe[1].err[0], 0.1, 0.01);
+    /* equal amplitudes everywhere: mid-span */
+    for (int k = 0; k < 4; k++) sf.a[1][k] = sf.a[0][k];
+    free_run(&F);
+    if (make_run(&F, &sf, GAL_MODEL_FULL)) { CHECK(0, "out of memory"); return; }
+    CHECK(gal_compare_runs(&F, &R, -1, &c) == GAL_OK && c.headline[0] == 0, "a tie: headline %d", c.headline[0]);
+    free_run(&F), free_run(&R);
+}
+
+/* a reference still changing over the window: unsteady; mismatched probes refused */
+static void test_unsteady(void)
+{
+    synth sf = antisym(1, 0.5);
+    sf.decay = 0.6; /* 40% of the amplitude lost by the end */
+    gal_sim_result F, R;
+    if (make_run(&F, &sf, GAL_MODEL_FULL) || make_run(&R, &sf, GAL_MODEL_REDUCED)) { CHECK(0, "out of memory"); return; }
+    gal_compare_figures c;
+    CHECK(gal_compare_runs(&F, &R, 150, &c) == GAL_OK, "%s", gal_error_message());
+    printf("    decaying reference: window from %g s, vertical p-p %.3f then %.3f m, drift %.3f\n", c.full.steady_from_s,
+           c.window_pp_first, c.window_pp_second, c.window_drift);
+    CHECK(!c.full_steady && c.window_drift > 0.1, "drift %g", c.window_drift);
+    CHECK_NEAR(c.full.steady_from_s, 150, DT);
+    CHECK(c.err_vertical < 1e-12, "the same traces: error %g", c.err_vertical);
+    R.nprobe = 1;
+    CHECK(gal_compare_runs(&F, &R, -1, &c) == GAL_EINPUT, "mismatched probes accepted");
+    free_run(&F), free_run(&R);
+}
+
+int main(void)
+{
+    RUN(test_antisymmetric);
+    RUN(test_symmetric);
+    RUN(test_unsteady);
+    return CHECK_SUMMARY();
+}
