@@ -15,6 +15,13 @@ static double relerr(double a, double b)
     return fabs(a - b) / fmax(fabs(b), 1e-300);
 }
 
+/* the relative error of the reduced peak-to-peak a against the full b of family f; NaN when the full
+ * model does not move in that family (GAL_CMP_STILL_*) */
+static double amplitude_err(double a, double b, int f)
+{
+    return fabs(b) < (f == GAL_CMP_TWIST ? GAL_CMP_STILL_DEG : GAL_CMP_STILL_M) ? NAN : relerr(a, b);
+}
+
 /* the probe of largest full peak-to-peak in component comp; mid-span unless another is larger */
 static int largest(const gal_compare_figures *c, int mid, int comp)
 {
@@ -76,9 +83,10 @@ int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, doub
         p->position = full->probe[k];
         st = gal_sim_measure(full, k, from, &p->full);
         if (!st) st = gal_sim_measure(red, k, p->full.steady_from_s, &p->reduced);
-        p->frequency_error = relerr(p->reduced.frequency_hz[1], p->full.frequency_hz[1]);
         for (int f = 0; f < GAL_CMP_FAMILIES; f++)
-            p->err[f] = relerr(p->reduced.peak_to_peak[comp_of[f]], p->full.peak_to_peak[comp_of[f]]);
+            p->err[f] = amplitude_err(p->reduced.peak_to_peak[comp_of[f]], p->full.peak_to_peak[comp_of[f]], f);
+        p->frequency_error = isnan(p->err[GAL_CMP_VERTICAL]) ? NAN
+                                                              : relerr(p->reduced.frequency_hz[1], p->full.frequency_hz[1]);
     }
     if (st) return st;
     for (int f = 0; f < GAL_CMP_FAMILIES; f++) c->headline[f] = largest(c, mid, comp_of[f]);

@@ -2,6 +2,7 @@
  * table of usage.c), reading SCENE [--set section.key=value ...] [-o DIR] and loading the scene
  * and the tables it names. */
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -167,13 +168,22 @@ int gal_cli_load_scene(int argc, char **argv, gal_scene *sc, const char **outdir
     return gal_cli_load_scene_opts(argc, argv, sc, outdir, NULL, NULL);
 }
 
+/* a relative error as a percentage, or n/a where the full model does not move (compare.h) */
+static const char *pct(char *buf, double e)
+{
+    if (isnan(e)) return "n/a";
+    snprintf(buf, 32, "%.3g%%", 100 * e);
+    return buf;
+}
+
 void gal_cli_print_compare(const gal_compare_figures *c, const char *twist, double setup_s)
 {
+    char b[4][32];
     const gal_compare_probe *p = c->probe;
     const int *h = c->headline;
-    printf("frequency error %.3g%%, amplitude errors: vertical %.3g%%, horizontal %.3g%%, %s %.3g%%; speedup %.2fx "
-           "(reduced model's own set-up %.3f s)\n", 100 * c->frequency_error, 100 * c->err_vertical,
-           100 * c->err_horizontal, twist, 100 * c->err_twist, c->speedup, setup_s);
+    printf("frequency error %s, amplitude errors: vertical %s, horizontal %s, %s %s; speedup %.2fx "
+           "(reduced model's own set-up %.3f s)\n", pct(b[0], c->frequency_error), pct(b[1], c->err_vertical),
+           pct(b[2], c->err_horizontal), twist, pct(b[3], c->err_twist), c->speedup, setup_s);
     if (!c->full_steady)
         fprintf(stderr, "gallop compare: warning: the full model is not steady over the window (vertical "
                 "peak-to-peak at %g of the span %.4g m in its first half, %.4g m in its second, %.3g%% apart: "
@@ -185,8 +195,9 @@ void gal_cli_print_compare(const gal_compare_figures *c, const char *twist, doub
            "span\n",
            p[h[0]].position, p[h[1]].position, twist, p[h[2]].position);
     for (int k = 0; k < c->nprobe; k++)
-        printf("  probe %-5g full vertical p-p %.4g m at %.4g Hz, reduced %.4g m at %.4g Hz; errors: frequency %.3g%%, "
-               "vertical %.3g%%, horizontal %.3g%%, %s %.3g%%\n", p[k].position, p[k].full.peak_to_peak[1],
+        printf("  probe %-5g full vertical p-p %.4g m at %.4g Hz, reduced %.4g m at %.4g Hz; errors: frequency %s, "
+               "vertical %s, horizontal %s, %s %s\n", p[k].position, p[k].full.peak_to_peak[1],
                p[k].full.frequency_hz[1], p[k].reduced.peak_to_peak[1], p[k].reduced.frequency_hz[1],
-               100 * p[k].frequency_error, 100 * p[k].err[0], 100 * p[k].err[1], twist, 100 * p[k].err[2]);
+               pct(b[0], p[k].frequency_error), pct(b[1], p[k].err[0]), pct(b[2], p[k].err[1]), twist,
+               pct(b[3], p[k].err[2]));
 }

@@ -45,6 +45,12 @@ typedef struct gal_compare_figures {
 
 #define GAL_CMP_STEADY_DRIFT 0.05
 
+/* A family whose full peak-to-peak is below these (a micrometre; a ten-thousandth of a degree) does
+ * not move: its relative error (and the vertical one's frequency error) is NaN, written null and
+ * printed n/a, never a quotient of round-off (a span at rest, a decayed one). */
+#define GAL_CMP_STILL_M 1e-6
+#define GAL_CMP_STILL_DEG 1e-4
+
 /* Measure both runs at every probe over one window and fill *c. The window is the full run's
  * steady part detected at the probe of largest full vertical peak-to-peak (from >= 0: from that
  * time instead). The runs must share their probes. */
