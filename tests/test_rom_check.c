@@ -9,9 +9,8 @@
 #include "gallop/modes/modes.h"
 #include "gallop/reduced/rom_adapt.h"
 #include "gallop/statics/statics.h"
+#include "rom_sagged.h"
 
-static const gal_rod_params sagged = {.length = 150, .elements = 24, .EA = 3e7, .EI = 30, .GJ = 200, .mass = 1.6,
-                                      .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
 
 /* The mass norm of the swing of the whole span by the angle eps about its chord: eps times each
  * node's sag below the chord (the span swings as a pendulum under a uniform horizontal load of eps
@@ -81,14 +80,11 @@ static void test_still(void)
 {
     gal_equilibrium eq = {0};
     gal_modes md = {0};
-    int want[GAL_FAMILY_COUNT] = {2, 1, 1, 0};
-    if (gal_statics_solve(&sagged, GAL_BY_SAG, 4.0, NULL, &eq) || gal_modes_find(eq.rod, eq.q, want, 40, &md)) {
+    int sel[8], ns;
+    if (sagged_setup(&eq, &md, sel, &ns)) {
         CHECK(0, "%s", gal_error_message());
         return;
     }
-    int sel[8], ns = 0;
-    for (int k = 0; k < md.n && ns < 8; k++)
-        if (md.mode[k].selected) sel[ns++] = k;
     still_span(eq.rod, eq.q, &md, sel, ns);
     copied_setup(eq.rod, eq.q, &md, sel, ns);
     gal_modes_clear(&md);
