@@ -12,6 +12,7 @@
 set -u
 bin=${1:-}; out=${2:-}
 here=$(cd "$(dirname "$0")" && pwd)
+. "$here/lib.sh"   # jget
 root=$(cd "$here/.." && pwd)
 if [ ! -x "$bin" ] || [ -z "$out" ]; then
     echo "usage: bundle_report.sh GALLOP OUTDIR" >&2
@@ -37,13 +38,6 @@ for i in 0 1 2; do
     "$bin" simulate "$s" --model full "${set[@]}" "${dur[@]}" -o "$d/$n/full" > "$d/logs/full_$n.log" 2>&1 || status=1
 done
 
-# jget FILE KEY...: the value of the last key, each key found on a line after the one before it
-jget() {
-    local f=$1; shift
-    [ -r "$f" ] || return 0
-    awk -v keys="$*" 'BEGIN { n = split(keys, k, " "); i = 1 }
-        i <= n && index($0, "\"" k[i] "\"") { if (i == n) { v = $0; sub(/^[^:]*:[[:space:]]*/, "", v); sub(/,$/, "", v); print v; exit } i++ }' "$f"
-}
 # the resolved scene's value of section.key (gallop check)
 cget() {
     "$bin" check "$1" ${3:+--set "$3"} 2>/dev/null | awk -v want="$2" '

@@ -78,3 +78,12 @@ num() {
 
 # has_rows FILE: the file exists and has at least one data row.
 has_rows() { [ -s "$1" ] && [ "$(csv_rows "$1")" -gt 0 ]; }
+
+# jget FILE KEY...: the value of the last key, each key found on a line after the one before it (no jq:
+# a line-based scan of gallop's own indented summary.json, for the bundle report scripts)
+jget() {
+    local f=$1; shift
+    [ -r "$f" ] || return 0
+    awk -v keys="$*" 'BEGIN { n = split(keys, k, " "); i = 1 }
+        i <= n && index($0, "\"" k[i] "\"") { if (i == n) { v = $0; sub(/^[^:]*:[[:space:]]*/, "", v); sub(/,$/, "", v); print v; exit } i++ }' "$f"
+}
