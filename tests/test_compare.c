@@ -5,13 +5,21 @@
  * (or bursting) over the window is said to be unsteady. */
 #include "check.h"
 #include "gallop.h"
+#include "gallop/run/sim.h"
 
 #define NS 6000
 #define DT 0.05
 #define PI 3.14159265358979323846
 
 /* one run: per probe (mid 0.5, quarter 0.25) a sine per component: amplitude, frequency */
-typedef struct { double a[2][4], f[2][4]; double decay; } synth;
+typedef struct { double a[2][4], f[2][4]; double decay; double a2[2][4], noise; } synth;
+
+/* uniform pseudo-noise in [-1, 1) of a fixed seed */
+static double unoise(unsigned *s)
+{
+    *s = *s * 1664525u + 1013904223u;
+    return (*s >> 8) * (2.0 / 16777216.0) - 1;
+}
 
 static int make_run(gal_sim_result *r, const synth *s, gal_model_kind kind)
 {
@@ -22,12 +30,15 @@ static int make_run(gal_sim_result *r, const synth *s, gal_model_kind kind)
     r->trace = malloc(NS * 8 * sizeof(double));
     r->tension = malloc(NS * 2 * sizeof(double));
     if (!r->time || !r->trace || !r->tension) return 1;
+    unsigned seed = kind == GAL_MODEL_FULL ? 1 : 2;
     for (long i = 0; i < NS; i++) {
         double t = i * DT, g = 1 - s->decay * t / (NS * DT); /* decay: a slow change of the amplitude */
         r->time[i] = t;
         for (int k = 0; k < 2; k++)
             for (int c = 0; c < 4; c++)
-                r->trace[i * 8 + 4 * k + c] = g * s->a[k][c] * sin(2 * PI * s->f[k][c] * t + 0.3 * c);
+                r->trace[i * 8 + 4 * k + c] = g * (s->a[k][c] * sin(2 * PI * s->f[k][c] * t + 0.3 * c) +
+                                                   s->a2[k][c] * sin(4 * PI * s->f[k][c] * t + 0.9)) +
+                                              s->noise * unoise(&seed);
         r->tension[2 * i] = r->tension[2 * i + 1] = 25000 + 100 * sin(2 * PI * 0.5 * t);
     }
     return 0;
@@ -157,8 +168,67 @@ static void test_still(void)
     free_run(&F), free_run(&R);
 }
 
+/* issue 13's flip: where the second harmonic is the larger line (the quarter span of crescent_condor,
+ * twist, horizontal motion), two runs that agree differ in which of f and 2f is the larger; both are
+ * periodic at f, and the frequency error is that of f (on main: 50%, the one's 2f against the
+ * other's f). Each run's larger line is reported with its order. */
+static void test_harmonic_flip(void)
+{
+    synth sf = antisym(1, 0.5), sr = antisym(1, 0.5);
+    sf.a2[1][1] = 1.3 * sf.a[1][1], sr.a2[1][1] = 0.8 * sr.a[1][1]; /* quarter vertical: 2f larger in the full run */
+    sf.a2[1][0] = 1.2 * sf.a[1][0], sr.a2[1][0] = 0.9 * sr.a[1][0];
+    sf.noise = sr.noise = 0.05;
+    gal_sim_result F, R;
+    if (make_run(&F, &sf, GAL_MODEL_FULL) || make_run(&R, &sr, GAL_MODEL_REDUCED)) { CHECK(0, "out of memory"); return; }
+    gal_compare_figures c;
+    CHECK(gal_compare_runs(&F, &R, -1, &c) == GAL_OK, "%s", gal_error_message());
+    const gal_compare_probe *q = c.probe + 1;
+    printf("    quarter: full %.5f Hz (larger line %.5f Hz, order %d), reduced %.5f Hz (%.5f Hz, %d); frequency error "
+           "%.2e\n", q->full.frequency_hz[1], q->full.dominant_hz[1], q->full.harmonic[1], q->reduced.frequency_hz[1],
+           q->reduced.dominant_hz[1], q->reduced.harmonic[1], c.frequency_error);
+    CHECK(c.headline[GAL_CMP_VERTICAL] == 1, "headline at the quarter: %d", c.headline[GAL_CMP_VERTICAL]);
+    CHECK(c.frequency_error < 1e-3, "f against f: error %g", c.frequency_error);
+    CHECK(q->full.harmonic[1] == 2 && q->reduced.harmonic[1] == 1 && c.full.harmonic[1] == 2, "orders %d %d",
+          q->full.harmonic[1], q->reduced.harmonic[1]);
+    CHECK_NEAR(q->full.dominant_hz[1], 0.5, 1e-3);
+    CHECK_NEAR(q->full.frequency_hz[0], 0.25, 1e-3); /* the horizontal too */
+    free_run(&F), free_run(&R);
+}
+
+/* the real case: data/scenes/crescent_condor.ini, 300 s, gallops antisymmetrically; at the quarter
+ * (the vertical headline) the full run's larger line is 2f = 0.506 Hz, the reduced run's f = 0.256
+ * Hz: main said 49.4%; both orbits have the period 1/f (0.2536 and 0.2563 Hz: 1.06%) */
+static void test_crescent(void)
+{
+    gal_scene sc;
+    gal_sim_setup s;
+    gal_sim_result F, R;
+    if (gal_scene_load(&sc, "data/scenes/crescent_condor.ini", NULL, 0, "data/conductors.csv") ||
+        gal_sim_setup_init(&s, &sc, 1)) {
+        CHECK(0, "%s", gal_error_message());
+        return;
+    }
+    int sf = gal_sim_run(&s, GAL_MODEL_FULL, &F), sr = sf ? 1 : gal_sim_run(&s, GAL_MODEL_REDUCED, &R);
+    CHECK(!sf && !sr, "%s", gal_error_message());
+    gal_compare_figures c;
+    if (!sf && !sr) {
+        CHECK(gal_compare_runs(&F, &R, -1, &c) == GAL_OK, "%s", gal_error_message());
+        printf("    crescent_condor at %g: full %.4f Hz (larger line order %d), reduced %.4f Hz (%d): error %.4f\n",
+               c.probe[c.headline[0]].position, c.full.frequency_hz[1], c.full.harmonic[1], c.reduced.frequency_hz[1],
+               c.reduced.harmonic[1], c.frequency_error);
+        CHECK(c.frequency_error < 0.02, "frequency error %g", c.frequency_error);
+        CHECK(c.full.frequency_hz[1] < 0.3 && c.reduced.frequency_hz[1] < 0.3, "f %g and %g Hz", c.full.frequency_hz[1],
+              c.reduced.frequency_hz[1]);
+    }
+    if (!sf) gal_sim_result_clear(&F);
+    if (!sr) gal_sim_result_clear(&R);
+    gal_sim_setup_clear(&s);
+}
+
 int main(void)
 {
+    RUN(test_harmonic_flip);
+    RUN(test_crescent);
     RUN(test_still);
     RUN(test_antisymmetric);
     RUN(test_symmetric);

@@ -122,6 +122,49 @@ static void test_two_sines(void)
     free(x);
 }
 
+/* The fundamental (gal_spectrum_fundamental): a sine with a stronger 2nd (3rd, 4th) harmonic in
+ * noise is periodic at f, not at the larger line; a lower line that is no subharmonic of the dominant
+ * one, or a remainder under 5% of its amplitude, is not the fundamental. */
+static void harmonic_case(const char *what, const double *f, const double *a, int nl, double want, int order)
+{
+    size_t n = 6000;
+    double dt = 0.05, df, *x = malloc(n * sizeof *x);
+    rng_state = 99;
+    for (size_t j = 0; j < n; j++) {
+        x[j] = 0.2 * nrand();
+        for (int l = 0; l < nl; l++) x[j] += a[l] * sin(2 * PI * f[l] * j * dt + 0.7 * l);
+    }
+    gal_measures m;
+    CHECK(measure(x, n, dt, &m, &df) == GAL_OK, "%s", gal_error_message());
+    printf("    %s: dominant %.5f Hz, fundamental %.5f Hz, order %d\n", what, m.frequency, m.fundamental, m.harmonic);
+    CHECK(fabs(m.fundamental - want) < 1e-3 * want && m.harmonic == order, "%s: fundamental %g Hz (order %d), want %g "
+          "(%d)", what, m.fundamental, m.harmonic, want, order);
+    free(x);
+}
+
+static void test_fundamental(void)
+{
+    double f2[] = {0.25, 0.5}, a2[] = {1.0, 1.5};
+    harmonic_case("2nd harmonic 1.5x stronger", f2, a2, 2, 0.25, 2);
+    double a2w[] = {1.0, 0.6};
+    harmonic_case("2nd harmonic weaker", f2, a2w, 2, 0.25, 1);
+    double a2s[] = {0.08, 1.0}; /* a small line (8%) still makes the period */
+    harmonic_case("small fundamental", f2, a2s, 2, 0.25, 2);
+    double f3[] = {0.3, 0.9}, a3[] = {0.5, 1.2};
+    harmonic_case("3rd harmonic stronger", f3, a3, 2, 0.3, 3);
+    double fx[] = {0.3, 0.5}, ax[] = {0.6, 1.0};
+    harmonic_case("a lower line, not a subharmonic", fx, ax, 2, 0.5, 1);
+    double a2t[] = {0.03, 1.0}; /* a remainder of 3%: no period of its own */
+    harmonic_case("a remainder below 5%", f2, a2t, 2, 0.5, 1);
+    double f4[] = {0.2, 0.4, 0.6, 0.8}, a4[] = {0.3, 0.5, 0.4, 1.0}; /* the 4th harmonic the largest */
+    harmonic_case("4th harmonic largest", f4, a4, 4, 0.2, 4);
+    gal_peak none[1];
+    double f0;
+    int order;
+    gal_spectrum_fundamental(none, 0, &f0, &order);
+    CHECK(isnan(f0) && order == 0, "no peak: %g, %d", f0, order);
+}
+
 /* White noise: sum(PSD) df equals the variance within 3% (Parseval), and the PSD is flat. */
 static void test_white_noise_parseval(void)
 {
@@ -580,6 +623,7 @@ int main(void)
     RUN(test_pure_sine_between_bins);
     RUN(test_sine_sweep);
     RUN(test_two_sines);
+    RUN(test_fundamental);
     RUN(test_white_noise_parseval);
     RUN(test_time_to_steady);
     RUN(test_orbit_ellipse);

@@ -97,6 +97,8 @@ int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, doub
         int j = comp_of[f];
         c->full.frequency_hz[j] = p->full.frequency_hz[j], c->full.peak_to_peak[j] = p->full.peak_to_peak[j];
         c->reduced.frequency_hz[j] = p->reduced.frequency_hz[j], c->reduced.peak_to_peak[j] = p->reduced.peak_to_peak[j];
+        c->full.dominant_hz[j] = p->full.dominant_hz[j], c->full.harmonic[j] = p->full.harmonic[j];
+        c->reduced.dominant_hz[j] = p->reduced.dominant_hz[j], c->reduced.harmonic[j] = p->reduced.harmonic[j];
     }
     c->frequency_error = pv->frequency_error;
     c->err_vertical = pv->err[GAL_CMP_VERTICAL];

@@ -64,7 +64,7 @@ static void envelope_times(const double *x, long n, double dt, double *env, gal_
     m->time_to_steady_s = ts;
 }
 
-/* Frequency, amplitudes and orbit of probe k over samples [i0, n); x is scratch of n. */
+/* Frequencies, amplitudes and orbit of probe k over samples [i0, n); x is scratch of n. */
 static int window_measures(const gal_sim_result *r, int k, long i0, double *x, gal_sim_measures *m)
 {
     long ns = r->nsamples - i0;
@@ -74,8 +74,10 @@ static int window_measures(const gal_sim_result *r, int k, long i0, double *x, g
     for (int c = 0; c < 4; c++) {
         column(r, k, c, i0, x);
         gal_measures gm;
-        if ((st = gal_spectrum_measure(w, x, (size_t)ns, r->dt_out, 3, NULL, &gm))) break;
-        m->frequency_hz[c] = gm.frequency;
+        if ((st = gal_spectrum_measure(w, x, (size_t)ns, r->dt_out, GAL_SPECTRUM_MAX_PEAKS, NULL, &gm))) break;
+        m->frequency_hz[c] = gm.fundamental;
+        m->dominant_hz[c] = gm.frequency;
+        m->harmonic[c] = gm.harmonic;
         m->peak_to_peak[c] = gm.peak_to_peak;
         m->rms[c] = gm.rms;
         m->mean[c] = gm.mean;

@@ -248,11 +248,22 @@ int gal_spectrum_peaks(const double *psd, size_t nfreq, double df, const double 
     return GAL_OK;
 }
 
+void gal_spectrum_fundamental(const gal_peak *pk, size_t np, double *f0, int *order)
+{
+    *f0 = np ? pk[0].frequency : NAN, *order = np ? 1 : 0;
+    for (size_t q = 1; q < np; q++) {
+        double fd = pk[0].frequency, fq = pk[q].frequency, n = floor(fd / fq + 0.5);
+        if (!(fq < *f0 && pk[q].amplitude >= GAL_SPECTRUM_FUNDAMENTAL_AMP * pk[0].amplitude)) continue;
+        if (n >= 2 && n <= GAL_SPECTRUM_MAX_HARMONIC && fabs(fd - n * fq) <= GAL_SPECTRUM_HARMONIC_TOL * fd)
+            *f0 = fq, *order = (int)n;
+    }
+}
+
 int gal_spectrum_measure(gal_welch *w, const double *x, size_t n, double dt, size_t kmax,
                          double *psd, gal_measures *m)
 {
     memset(m, 0, sizeof *m);
-    m->frequency = m->amplitude = NAN;
+    m->frequency = m->amplitude = m->fundamental = NAN;
     if (n == 0) return gal_error(GAL_EINPUT, "empty record");
     double mean = 0, lo = x[0], hi = x[0], ss = 0;
     for (size_t j = 0; j < n; j++) {
@@ -277,6 +288,7 @@ int gal_spectrum_measure(gal_welch *w, const double *x, size_t n, double dt, siz
     if (m->npeaks > 0) {
         m->frequency = m->peaks[0].frequency;
         m->amplitude = m->peaks[0].amplitude;
+        gal_spectrum_fundamental(m->peaks, m->npeaks, &m->fundamental, &m->harmonic);
     } else {
         /* no line above the noise floor: the dominant frequency is still the largest local
          * maximum (m->npeaks = 0 says it is not significant) */
@@ -286,6 +298,7 @@ int gal_spectrum_measure(gal_welch *w, const double *x, size_t n, double dt, siz
         if (kb > 0 && (st = gal_spectrum_refine(x, n, dt, (double)kb * df, 0.6 * df, &m->frequency,
                                                 &m->amplitude)))
             return st;
+        m->fundamental = m->frequency, m->harmonic = kb > 0;
     }
     return GAL_OK;
 }

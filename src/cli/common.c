@@ -176,8 +176,17 @@ static const char *pct(char *buf, double e)
     return buf;
 }
 
+/* a vertical fundamental frequency, and the order of the larger line when it is a harmonic of it */
+static const char *hz(char *buf, const gal_sim_measures *m)
+{
+    if (m->harmonic[1] > 1) snprintf(buf, 48, "%.4g Hz (harmonic %d larger)", m->frequency_hz[1], m->harmonic[1]);
+    else snprintf(buf, 48, "%.4g Hz", m->frequency_hz[1]);
+    return buf;
+}
+
 void gal_cli_print_compare(const gal_compare_figures *c, const char *twist, double setup_s)
 {
+    char f[2][48];
     char b[4][32];
     const gal_compare_probe *p = c->probe;
     const int *h = c->headline;
@@ -195,9 +204,9 @@ void gal_cli_print_compare(const gal_compare_figures *c, const char *twist, doub
            "span\n",
            p[h[0]].position, p[h[1]].position, twist, p[h[2]].position);
     for (int k = 0; k < c->nprobe; k++)
-        printf("  probe %-5g full vertical p-p %.4g m at %.4g Hz, reduced %.4g m at %.4g Hz; errors: frequency %s, "
+        printf("  probe %-5g full vertical p-p %.4g m at %s, reduced %.4g m at %s; errors: frequency %s, "
                "vertical %s, horizontal %s, %s %s\n", p[k].position, p[k].full.peak_to_peak[1],
-               p[k].full.frequency_hz[1], p[k].reduced.peak_to_peak[1], p[k].reduced.frequency_hz[1],
+               hz(f[0], &p[k].full), p[k].reduced.peak_to_peak[1], hz(f[1], &p[k].reduced),
                pct(b[0], p[k].frequency_error), pct(b[1], p[k].err[0]), pct(b[2], p[k].err[1]), twist,
                pct(b[3], p[k].err[2]));
 }

@@ -25,6 +25,8 @@ static void json_measures(gal_json *j, const gal_sim_measures *m)
         const char *u = c == 3 ? "deg" : "m";
         char key[64];
         gal_json_kv_num(j, "frequency_hz", m->frequency_hz[c]);
+        gal_json_kv_num(j, "dominant_frequency_hz", m->dominant_hz[c]);
+        gal_json_kv_int(j, "harmonic", m->harmonic[c]);
         snprintf(key, sizeof key, "peak_to_peak_%s", u);
         gal_json_kv_num(j, key, m->peak_to_peak[c]);
         snprintf(key, sizeof key, "rms_%s", u);
@@ -50,6 +52,8 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     double dur = r->time[r->nsamples - 1];
     gal_json_kv_num(j, "wall_time_per_simulated_s", dur > 0 ? r->wall_time_s / dur : NAN);
     gal_json_kv_num(j, "frequency_hz", mid->frequency_hz[1]);
+    gal_json_kv_num(j, "dominant_frequency_hz", mid->dominant_hz[1]);
+    gal_json_kv_int(j, "harmonic", mid->harmonic[1]);
     gal_json_key(j, "amplitude_m");
     gal_json_obj_begin(j);
     gal_json_kv_num(j, "vertical", mid->peak_to_peak[1]);
@@ -239,6 +243,8 @@ static void json_probe_run(gal_json *j, const char *key, const gal_sim_measures 
     gal_json_key(j, key);
     gal_json_obj_begin(j);
     gal_json_kv_num(j, "frequency_hz", m->frequency_hz[1]);
+    gal_json_kv_num(j, "dominant_frequency_hz", m->dominant_hz[1]);
+    gal_json_kv_int(j, "harmonic", m->harmonic[1]);
     gal_json_kv_num(j, "vertical_peak_to_peak_m", m->peak_to_peak[1]);
     gal_json_kv_num(j, "horizontal_peak_to_peak_m", m->peak_to_peak[0]);
     gal_json_kv_num(j, "twist_peak_to_peak_deg", m->peak_to_peak[3]);

@@ -59,6 +59,8 @@ static void json_column(gal_json *j, const gal_measures *m, double tss)
 {
     gal_json_obj_begin(j);
     gal_json_kv_num(j, "frequency_hz", m->frequency);
+    gal_json_kv_num(j, "fundamental_hz", m->fundamental);
+    gal_json_kv_int(j, "harmonic", m->harmonic);
     gal_json_key(j, "peaks_hz");
     gal_json_arr_begin(j);
     for (size_t q = 0; q < m->npeaks; q++) gal_json_num(j, m->peaks[q].frequency);
@@ -133,19 +135,20 @@ void gal_trace_spectrum_print(FILE *fp, const char *path, const gal_trace *tr, c
     fprintf(fp, "trace %s: %zu samples, dt %.6g s, steady part from %.6g s (%s), Welch %zu x %zu "
                 "samples, df %.6g Hz\n", path, tr->n, tr->dt, tr->t[s->i0], s->auto_from ? "auto" : "--from",
             s->nsegments, s->nseg, s->df);
-    fprintf(fp, "%-20s %12s %12s %12s %12s %12s %12s\n", "column", "mean", "rms", "peak-to-peak", "f1 [Hz]",
-            "f2 [Hz]", "t_steady [s]");
+    fprintf(fp, "%-20s %12s %12s %12s %12s %12s %12s %12s\n", "column", "mean", "rms", "peak-to-peak", "f1 [Hz]",
+            "f2 [Hz]", "t_steady [s]", "f0 [Hz]");
     for (size_t c = 0; c < s->nsel; c++) {
         const gal_measures *m = &s->m[c];
-        char b[6][32];
+        char b[7][32];
         fmt(b[0], 32, m->mean);
         fmt(b[1], 32, m->rms);
         fmt(b[2], 32, m->peak_to_peak);
         fmt(b[3], 32, m->npeaks > 0 ? m->peaks[0].frequency : NAN);
         fmt(b[4], 32, m->npeaks > 1 ? m->peaks[1].frequency : NAN);
         fmt(b[5], 32, s->tss[c]);
-        fprintf(fp, "%-20s %12s %12s %12s %12s %12s %12s\n", tr->names[s->sel[c]], b[0], b[1], b[2], b[3], b[4],
-                b[5]);
+        fmt(b[6], 32, m->fundamental);
+        fprintf(fp, "%-20s %12s %12s %12s %12s %12s %12s %12s\n", tr->names[s->sel[c]], b[0], b[1], b[2], b[3], b[4],
+                b[5], b[6]);
     }
     for (size_t q = 0; q < s->npairs; q++)
         fprintf(fp, "orbit %s,%s: semi-axes %.6g and %.6g, tilt %.4g deg\n", tr->names[s->pairs[q].y],

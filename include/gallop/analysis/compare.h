@@ -19,12 +19,14 @@ enum { GAL_CMP_VERTICAL, GAL_CMP_HORIZONTAL, GAL_CMP_TWIST, GAL_CMP_FAMILIES };
 typedef struct gal_compare_probe {
     double position;                   /* fraction of the span */
     gal_sim_measures full, reduced;    /* over the common window */
-    double frequency_error;            /* relative, of the vertical dominant frequency */
+    double frequency_error;            /* relative, of the vertical fundamental frequency (measure.h:
+                                        * frequency_hz; each run's dominant line and its harmonic
+                                        * order are in dominant_hz, harmonic) */
     double err[GAL_CMP_FAMILIES];      /* relative peak-to-peak errors: vertical, horizontal, twist */
 } gal_compare_probe;
 
 typedef struct gal_compare_figures {
-    /* the headline: each family at its probe (headline[]); frequency_error the vertical dominant
+    /* the headline: each family at its probe (headline[]); frequency_error the vertical fundamental
      * frequency at the vertical headline probe; amplitude_error the worst of the three */
     double frequency_error, amplitude_error;
     double err_vertical, err_horizontal, err_twist;

@@ -13,7 +13,12 @@ typedef struct gal_sim_measures {
     double time_to_steady_s;      /* vertical envelope within 5% of its final level from then on */
     double rise_time_s;           /* vertical envelope first at 90% of its final level */
     double steady_from_s;         /* start of the window the measures are taken over */
-    double frequency_hz[4];       /* horizontal, vertical, along, twist */
+    /* horizontal, vertical, along, twist: the fundamental of each trace (gal_spectrum_fundamental,
+     * spectrum.h: the lowest significant line of which the dominant one is a harmonic), the
+     * dominant (largest) line and its order as a harmonic of the fundamental (1: the same line) */
+    double frequency_hz[4];
+    double dominant_hz[4];
+    int harmonic[4];
     double peak_to_peak[4];       /* m, m, m, deg */
     double rms[4], mean[4];
     double orbit_major, orbit_minor, orbit_tilt_deg; /* m, m, deg */

@@ -110,6 +110,24 @@ int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double 
 int gal_spectrum_peaks(const double *psd, size_t nfreq, double df, const double *x, size_t n,
                        double dt, size_t kmax, gal_peak *peaks, size_t *npeaks);
 
+/* The fundamental of a periodic trace: a galloping orbit of period 1/f0 puts its power on f0 and
+ * its harmonics, and where the second harmonic is the stronger line (twist and horizontal motion,
+ * which follow the tension's 2f; a probe near a node of the first harmonic) the largest peak is 2f,
+ * and which of the two lines is the larger flips between two runs that agree. The fundamental is
+ * the lowest significant line (a peak of gal_spectrum_peaks: 10 dB above the local noise floor) of
+ * at least GAL_SPECTRUM_FUNDAMENTAL_AMP times the dominant line's amplitude of which the dominant
+ * line is the n-th harmonic, 2 <= n <= GAL_SPECTRUM_MAX_HARMONIC, within GAL_SPECTRUM_HARMONIC_TOL
+ * (relative: a transient's lines are a few tenths of a per cent off the exact ratio); else the
+ * dominant line itself (n = 1). A line under 5% of the dominant amplitude changes successive crests
+ * by under a tenth: the remainder of a transient or another mode's small share, not the period of
+ * the trace; a lower line that is no subharmonic of the dominant one is another mode. */
+#define GAL_SPECTRUM_FUNDAMENTAL_AMP 0.05
+#define GAL_SPECTRUM_MAX_HARMONIC 4
+#define GAL_SPECTRUM_HARMONIC_TOL 0.02
+/* The fundamental of the peaks pk[0..np) (pk[0] the dominant one): its frequency in *f0 and the
+ * dominant line's harmonic order in *order (NaN and 0 when np = 0). */
+void gal_spectrum_fundamental(const gal_peak *pk, size_t np, double *f0, int *order);
+
 /* The measures of one column over a steady part x[0..n). */
 typedef struct gal_measures {
     double mean;          /* unit of x */
@@ -118,6 +136,9 @@ typedef struct gal_measures {
     double frequency;     /* dominant frequency, Hz: peaks[0], or with npeaks = 0 the largest local
                            * maximum of the PSD (not significant); NaN for a constant record */
     double amplitude;     /* spectral amplitude of the dominant sine; NaN when none */
+    double fundamental;   /* Hz, gal_spectrum_fundamental of the peaks (the dominant frequency when
+                           * npeaks = 0; NaN for a constant record) */
+    int harmonic;         /* the dominant line's order as a harmonic of the fundamental (1: it is) */
     size_t npeaks;
     gal_peak peaks[GAL_SPECTRUM_MAX_PEAKS];   /* peaks[0] is the dominant one */
 } gal_measures;
