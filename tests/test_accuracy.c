@@ -87,8 +87,37 @@ static void test_string_front(void)
     gal_accuracy_clear(&r);
 }
 
+/* The dynamic studies measure as `gallop compare` does (compare.h): data/scenes/crescent_condor.ini
+ * gallops antisymmetrically, mid-span (0.5) near a node moving 0.4-0.6 m while the quarter (0.25)
+ * moves 2.5-4 m; the effects study's rows are measured at the quarter (on main: at mid-span). */
+static void test_antisymmetric_probe(void)
+{
+    gal_scene sc;
+    const char *ov[] = {"simulation.duration=200"};
+    int st = gal_scene_load(&sc, "data/scenes/crescent_condor.ini", ov, 1, "data/conductors.csv");
+    CHECK(st == 0, "scene: %s", gal_error_message());
+    if (st) return;
+    gal_acc_opts o;
+    gal_accuracy_default_opts(&o);
+    o.studies = 1u << GAL_ACC_EFFECTS;
+    gal_acc_result r;
+    st = gal_accuracy_run(&sc, &o, &r);
+    CHECK(st == 0, "accuracy: %s", gal_error_message());
+    const gal_acc_summary *S = r.study + GAL_ACC_EFFECTS;
+    if (!st && S->reference >= 0) {
+        const gal_acc_row *w = r.row + S->reference;
+        printf("    crescent_condor, effects study: measured at %g of the span, vertical p-p %.3f m at %.4f Hz\n",
+               S->probe, w->amplitude_m, w->frequency_hz);
+        CHECK(S->probe == 0.25, "measured at %g of the span", S->probe);
+        CHECK(w->amplitude_m > 1.5, "vertical p-p %g m: mid-span's", w->amplitude_m);
+        CHECK(w->frequency_hz > 0.2 && w->frequency_hz < 0.3, "the orbit's fundamental: %g Hz", w->frequency_hz);
+    } else CHECK(0, "no reference row");
+    gal_accuracy_clear(&r);
+}
+
 int main(void)
 {
+    RUN(test_antisymmetric_probe);
     RUN(test_string_front);
     return CHECK_SUMMARY();
 }

@@ -195,6 +195,36 @@ static void test_harmonic_flip(void)
     free_run(&F), free_run(&R);
 }
 
+static int same(double a, double b) { return a == b || (isnan(a) && isnan(b)); }
+
+/* gal_compare_reference and gal_compare_measure (what gallop accuracy and tests/rom/ measure with)
+ * give compare's own window, headline probes and records */
+static void test_same_measure(void)
+{
+    synth sf = antisym(1, 0.5), sr = antisym(0.7, 0.6);
+    sf.a2[1][1] = 2.5, sr.noise = 0.02;
+    gal_sim_result F, R;
+    if (make_run(&F, &sf, GAL_MODEL_FULL) || make_run(&R, &sr, GAL_MODEL_REDUCED)) { CHECK(0, "out of memory"); return; }
+    gal_compare_figures c;
+    gal_compare_ref h;
+    gal_sim_measures mf, mr;
+    CHECK(gal_compare_runs(&F, &R, -1, &c) == GAL_OK && gal_compare_reference(&F, -1, &h) == GAL_OK &&
+          gal_compare_measure(&F, &h, &mf) == GAL_OK && gal_compare_measure(&R, &h, &mr) == GAL_OK, "%s",
+          gal_error_message());
+    CHECK(!memcmp(h.headline, c.headline, sizeof h.headline) && h.from == c.full.steady_from_s, "probes %d %d %d vs "
+          "%d %d %d, from %g vs %g", h.headline[0], h.headline[1], h.headline[2], c.headline[0], c.headline[1],
+          c.headline[2], h.from, c.full.steady_from_s);
+    for (int j = 0; j < 4; j++) {
+        CHECK(mf.peak_to_peak[j] == c.full.peak_to_peak[j] && mr.peak_to_peak[j] == c.reduced.peak_to_peak[j],
+              "component %d: peak-to-peak", j);
+        CHECK(same(mf.frequency_hz[j], c.full.frequency_hz[j]) && same(mr.frequency_hz[j], c.reduced.frequency_hz[j]) &&
+              mr.harmonic[j] == c.reduced.harmonic[j], "component %d: frequency", j);
+    }
+    CHECK(h.position[GAL_CMP_VERTICAL] == 0.25 && h.position[GAL_CMP_TWIST] == 0.5, "positions %g %g",
+          h.position[0], h.position[2]);
+    free_run(&F), free_run(&R);
+}
+
 /* the real case: data/scenes/crescent_condor.ini, 300 s, gallops antisymmetrically; at the quarter
  * (the vertical headline) the full run's larger line is 2f = 0.506 Hz, the reduced run's f = 0.256
  * Hz: main said 49.4%; both orbits have the period 1/f (0.2536 and 0.2563 Hz: 1.06%) */
@@ -229,6 +259,7 @@ int main(void)
 {
     RUN(test_harmonic_flip);
     RUN(test_crescent);
+    RUN(test_same_measure);
     RUN(test_still);
     RUN(test_antisymmetric);
     RUN(test_symmetric);

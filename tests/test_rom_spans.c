@@ -1,6 +1,7 @@
 /* test_rom_spans.c: the short spans of tests/rom/ (those whose header says "short: make check")
  * through the recomputed reduced model against the full model on the same set-up, wind and steady
- * window (the full run's, at most its last half), with issue 13's figures: dominant frequency
+ * window (the full run's, at most its last half), measured as `gallop compare` measures (each family
+ * at the probe where the full model moves most: gal_compare_reference), with issue 13's figures: dominant frequency
  * within 1%, vertical and horizontal peak-to-peak within 5% (horizontal: or 2% of the vertical
  * where it is small), twist within 5% or 3 deg, largest support tension over the window within 5%,
  * and the self-check valid. The long spans are measured by tests/bench/bench_rom.c (make bench). */
@@ -45,15 +46,19 @@ static void one_span(const char *path, const char **ov, int nov, int growths_min
     int sr = sf ? 1 : gal_rom_sim_run(&s, NULL, &rr, &info);
     CHECK(sr == GAL_OK, "%s: reduced: %s", path, gal_error_message());
     if (!sf && !sr) {
-        int k = gal_sim_mid_probe(&rf);
+        /* measured as `gallop compare` measures (compare.h): each family at the probe where the full
+         * model moves most, over its window */
+        gal_compare_ref h;
         gal_sim_measures mf, mr;
-        gal_sim_measure(&rf, k, -1, &mf);
-        double dur = rf.time[rf.nsamples - 1], settled = mf.steady_from_s;
-        if (settled < 0.5 * dur) gal_sim_measure(&rf, k, 0.5 * dur, &mf); /* at most the last half */
-        gal_sim_measure(&rr, k, mf.steady_from_s, &mr);
-        printf("    %s: steady from %.0f s; reduced/full: f %.4f/%.4f Hz, vertical %.3f/%.3f m, horizontal %.3f/%.3f m, "
-               "twist %.1f/%.1f deg, T %.0f/%.0f N; residual %.3f, basis %d\n",
-               path, mf.steady_from_s, mr.frequency_hz[1], mf.frequency_hz[1], mr.peak_to_peak[1], mf.peak_to_peak[1],
+        CHECK(gal_compare_reference(&rf, -1, &h) == GAL_OK, "%s", gal_error_message());
+        double dur = rf.time[rf.nsamples - 1], settled = h.from;
+        if (settled < 0.5 * dur) h.from = 0.5 * dur; /* at most the last half */
+        CHECK(gal_compare_measure(&rf, &h, &mf) == GAL_OK && gal_compare_measure(&rr, &h, &mr) == GAL_OK, "%s",
+              gal_error_message());
+        printf("    %s: steady from %.0f s, probes %g/%g/%g; reduced/full: f %.4f/%.4f Hz, vertical %.3f/%.3f m, "
+               "horizontal %.3f/%.3f m, twist %.1f/%.1f deg, T %.0f/%.0f N; residual %.3f, basis %d\n",
+               path, mf.steady_from_s, h.position[0], h.position[1], h.position[2], mr.frequency_hz[1],
+               mf.frequency_hz[1], mr.peak_to_peak[1], mf.peak_to_peak[1],
                mr.peak_to_peak[0], mf.peak_to_peak[0], mr.peak_to_peak[3], mf.peak_to_peak[3], mr.tension_max_steady,
                mf.tension_max_steady, info.residual_max, info.basis);
         CHECK(settled > 0 && settled <= 0.75 * dur, "%s: the full model is not steady (from %g of %g s)", path, settled, dur);

@@ -263,7 +263,7 @@ static void choose(gal_acc_result *r, gal_acc_study s)
     if (!ref) { snprintf(S->buys, sizeof S->buys, "no reference"); return; }
     if (!c) {
         if (s == GAL_ACC_EFFECTS)
-            snprintf(S->buys, sizeof S->buys, "every effect switched off changes the mid-span galloping measures by more "
+            snprintf(S->buys, sizeof S->buys, "every effect switched off changes the galloping measures by more "
                      "than %.3g%%: keep them all on", 100 * r->tolerance);
         else if (best >= 0)
             snprintf(S->buys, sizeof S->buys, "no setting meets the tolerance of %.3g%%: the best, %s = %s, is off by "
@@ -281,22 +281,22 @@ static void choose(gal_acc_result *r, gal_acc_study s)
         break;
     case GAL_ACC_MODES:
         snprintf(S->buys, sizeof S->buys, "a reduced basis of %s (vertical/horizontal/torsional) modes integrates in "
-                 "%.3g s (plus %.3g s of its own set-up), %.3gx faster than the full model (%.3g s), with the mid-span "
+                 "%.3g s (plus %.3g s of its own set-up), %.3gx faster than the full model (%.3g s), with the "
                  "vertical amplitude and frequency within %.3g%%", c->value, c->wall_time_s, c->build_time_s, ratio,
                  ref->wall_time_s, 100 * c->error);
         break;
     case GAL_ACC_TIME_STEP:
         snprintf(S->buys, sizeof S->buys, "a full-model time step of %s s runs in %.3g s, %.3gx faster than %s s "
-                 "(%.3g s), with the mid-span vertical amplitude and frequency within %.3g%%", c->value,
+                 "(%.3g s), with the vertical amplitude and frequency within %.3g%%", c->value,
                  c->wall_time_s, ratio, ref->value, ref->wall_time_s, 100 * c->error);
         break;
     case GAL_ACC_NEWTON_TOL:
         snprintf(S->buys, sizeof S->buys, "a full-model Newton tolerance of %s runs in %.3g s, %.3gx faster than %s "
-                 "(%.3g s), with the mid-span vertical amplitude and frequency within %.3g%%", c->value,
+                 "(%.3g s), with the vertical amplitude and frequency within %.3g%%", c->value,
                  c->wall_time_s, ratio, ref->value, ref->wall_time_s, 100 * c->error);
         break;
     default:
-        snprintf(S->buys, sizeof S->buys, "%s = off changes the mid-span vertical amplitude and frequency by %.3g%% "
+        snprintf(S->buys, sizeof S->buys, "%s = off changes the vertical amplitude and frequency by %.3g%% "
                  "only and runs in %.3g s against %.3g s with every effect on", c->setting, 100 * c->error,
                  c->wall_time_s, ref->wall_time_s);
         break;
@@ -335,7 +335,7 @@ int gal_accuracy_run(const gal_scene *sc, const gal_acc_opts *opts, gal_acc_resu
     for (int k = 0; k < GAL_ACC_NSTUDY && !st; k++) {
         if (!(o.studies & (1u << k))) continue;
         r->study[k].ran = 1;
-        r->study[k].steady_from_s = NAN;
+        r->study[k].steady_from_s = r->study[k].probe = NAN;
         r->study[k].output_interval_s = (dyn & (1u << k)) ? s.simulation.output_interval : NAN;
         if (o.progress) fprintf(stderr, "accuracy: study %s\n", gal_acc_study_names[k]);
         switch ((gal_acc_study)k) {

@@ -1,9 +1,10 @@
 /* accuracy_dyn.c: the dynamic studies of `gallop accuracy` (issue 7): the reduced basis against
  * one full-model run, the full model's time step, the physical effects; each setting is one run
- * measured at mid-span. */
+ * measured as `gallop compare` measures (compare.h: at the reference's headline probe). */
 #include "gallop/analysis/accuracy.h"
 #include "analysis/accuracy_int.h"
 #include "gallop/base/core.h"
+#include "gallop/analysis/compare.h"
 #include "gallop/analysis/measure.h"
 #include "gallop/run/sim.h"
 
@@ -12,34 +13,37 @@
 #include <string.h>
 
 /* ======================================================================================
- * dynamic studies: one run and its measures at mid-span */
+ * dynamic studies: one run and its measures as `gallop compare` takes them (compare.h): over the
+ * reference's window, at the probe where the reference moves most vertically */
 
 typedef struct {
-    double pp, hz;        /* vertical peak-to-peak (m) and dominant frequency (Hz) at mid-span */
+    double pp, hz;        /* vertical peak-to-peak (m) and fundamental frequency (Hz) at the headline probe */
     double from;          /* steady window start, s */
     double wall, build;   /* s */
 } dyn_out;
 
-static int dyn_measure(const gal_sim_result *res, double from, dyn_out *d)
+/* res measured against the reference *h; detect: res is the reference, *h is set from it */
+static int dyn_measure(const gal_sim_result *res, gal_compare_ref *h, int detect, dyn_out *d)
 {
     gal_sim_measures m;
-    int st = gal_sim_measure(res, gal_sim_mid_probe(res), from, &m);
+    int st = detect ? gal_compare_reference(res, -1, h) : GAL_OK;
+    if (!st) st = gal_compare_measure(res, h, &m);
     if (st) return st;
-    d->pp = m.peak_to_peak[1], d->hz = m.frequency_hz[1], d->from = m.steady_from_s;
+    d->pp = m.peak_to_peak[1], d->hz = m.frequency_hz[1], d->from = h->from;
     d->wall = res->wall_time_s, d->build = res->build_time_s;
-    if (!isfinite(d->pp) || !isfinite(d->hz)) return gal_error(GAL_EFAIL, "the mid-span vertical measures are not finite");
+    if (!isfinite(d->pp) || !isfinite(d->hz)) return gal_error(GAL_EFAIL, "the vertical measures are not finite");
     return GAL_OK;
 }
 
-/* set up the scene, run one model, measure (from < 0: detect the steady window) */
-static int dyn_once(const gal_scene *sc, gal_model_kind kind, double from, dyn_out *d)
+/* set up the scene, run one model, measure (detect: the reference run, which sets *h) */
+static int dyn_once(const gal_scene *sc, gal_model_kind kind, gal_compare_ref *h, int detect, dyn_out *d)
 {
     gal_sim_setup s;
     gal_sim_result res;
     memset(&res, 0, sizeof res);
     int st = gal_sim_setup_init(&s, sc, kind == GAL_MODEL_REDUCED);
     if (!st) st = gal_sim_run(&s, kind, &res);
-    if (!st) st = dyn_measure(&res, from, d);
+    if (!st) st = dyn_measure(&res, h, detect, d);
     gal_sim_result_clear(&res);
     gal_sim_setup_clear(&s);
     return st;
@@ -85,9 +89,10 @@ int gal_acc_study_modes(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
         b[j] = x;
     }
     dyn_out ref;
-    int st = dyn_once(sc, GAL_MODEL_FULL, -1, &ref);
+    gal_compare_ref h;
+    int st = dyn_once(sc, GAL_MODEL_FULL, &h, 1, &ref);
     if (st) return gal_error(st, "modes: the full-model reference run: %s", gal_error_message());
-    S->steady_from_s = ref.from;
+    S->steady_from_s = ref.from, S->probe = h.position[GAL_CMP_VERTICAL];
     gal_acc_row *w = gal_acc_row_add(r, GAL_ACC_MODES, "model", "full");
     if (!w) return gal_error(GAL_ENOMEM, "out of memory");
     dyn_fill(w, &ref, &ref);
@@ -100,7 +105,7 @@ int gal_acc_study_modes(const gal_scene *sc, const gal_acc_opts *o, gal_acc_resu
         if (!(w = gal_acc_row_add(r, GAL_ACC_MODES, "model.modes", "%d/%d/%d", b[i].v, b[i].h, b[i].t)))
             return gal_error(GAL_ENOMEM, "out of memory");
         dyn_out d;
-        if (dyn_once(&s, GAL_MODEL_REDUCED, ref.from, &d)) dyn_failed(o, w);
+        if (dyn_once(&s, GAL_MODEL_REDUCED, &h, 0, &d)) dyn_failed(o, w);
         else dyn_fill(w, &d, &ref);
         gal_acc_progress(o, w);
     }
@@ -124,6 +129,7 @@ static int full_sweep(gal_scene s, const gal_acc_opts *o, gal_acc_result *r, gal
     int st = gal_sim_setup_init(&su, &s, 1);
     if (st) { gal_sim_setup_clear(&su); return gal_error(st, "%s: set-up: %s", gal_acc_study_names[which], gal_error_message()); }
     dyn_out d[8];
+    gal_compare_ref h;
     int ok[8], ref = -1;
     char why[8][256];
     /* from the finest setting down: the finest that runs is the reference (the requested one
@@ -132,7 +138,7 @@ static int full_sweep(gal_scene s, const gal_acc_opts *o, gal_acc_result *r, gal
         set_value(&s, which, val[i]);
         gal_sim_result res;
         ok[i] = !gal_sim_run(&su, GAL_MODEL_FULL, &res) &&
-                !dyn_measure(&res, ref < 0 ? -1 : d[ref].from, &d[i]);
+                !dyn_measure(&res, &h, ref < 0, &d[i]);
         gal_sim_result_clear(&res);
         if (!ok[i]) {
             snprintf(why[i], sizeof why[i], "%s", gal_error_message());
@@ -142,7 +148,7 @@ static int full_sweep(gal_scene s, const gal_acc_opts *o, gal_acc_result *r, gal
                          "the finest setting that ran is the reference", key, val[i], gal_error_message());
             continue;
         }
-        if (ref < 0) ref = i, S->steady_from_s = d[i].from;
+        if (ref < 0) ref = i, S->steady_from_s = d[i].from, S->probe = h.position[GAL_CMP_VERTICAL];
         if (o->progress) fprintf(stderr, "accuracy: %-9s %d of %d runs done\n", gal_acc_study_names[which], nv - i, nv);
     }
     if (ref < 0) {
@@ -186,9 +192,10 @@ int gal_acc_study_effects(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
     static const gal_effect fx[] = {GAL_FX_TORSION, GAL_FX_BENDING, GAL_FX_AERO_MOMENT, GAL_FX_AERO_DAMPING,
                                     GAL_FX_TURBULENCE, GAL_FX_DAMPING};
     dyn_out ref;
-    int st = dyn_once(sc, GAL_MODEL_REDUCED, -1, &ref);
+    gal_compare_ref h;
+    int st = dyn_once(sc, GAL_MODEL_REDUCED, &h, 1, &ref);
     if (st) return gal_error(st, "effects: the reference run (all effects on): %s", gal_error_message());
-    S->steady_from_s = ref.from;
+    S->steady_from_s = ref.from, S->probe = h.position[GAL_CMP_VERTICAL];
     gal_acc_row *w = gal_acc_row_add(r, GAL_ACC_EFFECTS, "effects", "all_on");
     if (!w) return gal_error(GAL_ENOMEM, "out of memory");
     dyn_fill(w, &ref, &ref);
@@ -207,7 +214,7 @@ int gal_acc_study_effects(const gal_scene *sc, const gal_acc_opts *o, gal_acc_re
         snprintf(key, sizeof key, "effects.%s", gal_effect_names[e]);
         if (!(w = gal_acc_row_add(r, GAL_ACC_EFFECTS, key, "off"))) return gal_error(GAL_ENOMEM, "out of memory");
         dyn_out d;
-        if (dyn_once(&s, GAL_MODEL_REDUCED, ref.from, &d)) dyn_failed(o, w);
+        if (dyn_once(&s, GAL_MODEL_REDUCED, &h, 0, &d)) dyn_failed(o, w);
         else dyn_fill(w, &d, &ref);
         gal_acc_progress(o, w);
     }

@@ -74,13 +74,22 @@ static void config_scene(const acc_study *S, const gal_acc_config *c, int seed, 
     s->wind.seed = S->sc->wind.seed + seed;
 }
 
-/* the measures of one run into v */
-static int measures_of(const acc_study *S, const gal_sim_result *res, double from, double v[GAL_ACC_NMEAS],
+/* the measures of one run into v, as `gallop compare` takes them (compare.h): each family at the
+ * probe where the reference moves most, over its window; the first run measured with a detected
+ * window (from < 0) sets them */
+static int measures_of(acc_study *S, const gal_sim_result *res, double from, double v[GAL_ACC_NMEAS],
                        double *from_out)
 {
     gal_sim_measures m;
-    int st = gal_sim_measure(res, gal_sim_mid_probe(res), from, &m);
+    int st = GAL_OK;
+    if (!S->have_ref && !(st = gal_compare_reference(res, from, &S->ref))) {
+        S->have_ref = 1;
+        memcpy(S->F->probe, S->ref.position, sizeof S->F->probe);
+    }
     if (st) return st;
+    gal_compare_ref h = S->ref;
+    if (from >= 0) h.from = from;
+    if ((st = gal_compare_measure(res, &h, &m))) return st;
     /* amplitudes as RMS over the window: an integral of the trace, smooth in the discretization
      * (a peak-to-peak read off samples moves with where the samples fall on the crest) */
     const double *a = m.rms;
@@ -334,9 +343,9 @@ static int constants(acc_study *S, gal_acc_config *base)
 int gal_acc_study_front(const gal_scene *sc, const gal_acc_opts *o, gal_acc_result *r)
 {
     gal_acc_front *F = &r->front;
-    acc_study S = {sc, o, F, gal_wall_time(), 0, -1, {0}, sc->simulation.duration};
+    acc_study S = {sc, o, F, gal_wall_time(), 0, -1, {0}, sc->simulation.duration, 0, {0, {0}, {0}}};
     F->chosen = -1;
-    F->steady_from_s = NAN;
+    F->steady_from_s = F->probe[0] = F->probe[1] = F->probe[2] = NAN;
     F->base_newton_tol = sc->simulation.newton_tolerance;
     S.turbulent = sc->effect[GAL_FX_TURBULENCE] && sc->wind.turbulence != GAL_TURB_NONE;
     F->nseeds = S.turbulent ? (o->seeds > 0 ? o->seeds : 3) : 1;

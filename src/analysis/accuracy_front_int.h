@@ -5,6 +5,7 @@
 #define GALLOP_ACCURACY_FRONT_INT_H
 
 #include "gallop/analysis/accuracy.h"
+#include "gallop/analysis/compare.h"
 
 /* The study's constants and clock. */
 typedef struct acc_study {
@@ -13,9 +14,11 @@ typedef struct acc_study {
     gal_acc_front *F;
     double t0;                /* wall clock at the start, s */
     int turbulent;
-    int fcomp;                /* the translation whose dominant frequency is scored: 0 horizontal, 1 vertical */
+    int fcomp;                /* the translation whose fundamental frequency is scored: 0 horizontal, 1 vertical */
     int own[3];               /* the scene's own modes per family (torsional 0 when torsion is off) */
     double duration;          /* s */
+    int have_ref;             /* ref is set (by the first run measured with a detected window) */
+    gal_compare_ref ref;      /* the reference's window and probes: every run measured as compare does */
 } acc_study;
 
 /* wall time left in the budget, s (+inf without one) */

@@ -22,12 +22,13 @@ static double amplitude_err(double a, double b, int f)
     return fabs(b) < (f == GAL_CMP_TWIST ? GAL_CMP_STILL_DEG : GAL_CMP_STILL_M) ? NAN : relerr(a, b);
 }
 
-/* the probe of largest full peak-to-peak in component comp; mid-span unless another is larger */
-static int largest(const gal_compare_figures *c, int mid, int comp)
+/* the probe of largest peak-to-peak in component comp among *m[0..n); mid-span unless another is
+ * larger */
+static int largest(const gal_sim_measures *const *m, int n, int mid, int comp)
 {
     int best = mid;
-    for (int k = 0; k < c->nprobe; k++)
-        if (c->probe[k].full.peak_to_peak[comp] > c->probe[best].full.peak_to_peak[comp]) best = k;
+    for (int k = 0; k < n; k++)
+        if (m[k]->peak_to_peak[comp] > m[best]->peak_to_peak[comp]) best = k;
     return best;
 }
 
@@ -89,7 +90,9 @@ int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, doub
                                                               : relerr(p->reduced.frequency_hz[1], p->full.frequency_hz[1]);
     }
     if (st) return st;
-    for (int f = 0; f < GAL_CMP_FAMILIES; f++) c->headline[f] = largest(c, mid, comp_of[f]);
+    const gal_sim_measures *pm[GAL_MAX_PROBES];
+    for (int k = 0; k < c->nprobe; k++) pm[k] = &c->probe[k].full;
+    for (int f = 0; f < GAL_CMP_FAMILIES; f++) c->headline[f] = largest(pm, c->nprobe, mid, comp_of[f]);
     const gal_compare_probe *pv = c->probe + c->headline[GAL_CMP_VERTICAL];
     c->full = pv->full, c->reduced = pv->reduced;
     for (int f = GAL_CMP_HORIZONTAL; f < GAL_CMP_FAMILIES; f++) {
@@ -108,4 +111,35 @@ int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, doub
     c->speedup = full->wall_time_s / red->wall_time_s;
     window_drift(full, c);
     return GAL_OK;
+}
+
+int gal_compare_reference(const gal_sim_result *full, double from, gal_compare_ref *h)
+{
+    memset(h, 0, sizeof *h);
+    if (full->nprobe < 1 || full->nprobe > GAL_MAX_PROBES)
+        return gal_error(GAL_EINPUT, "compare: a run of %d probes", full->nprobe);
+    gal_sim_measures m[GAL_MAX_PROBES];
+    const gal_sim_measures *pm[GAL_MAX_PROBES];
+    int mid = gal_sim_mid_probe(full), st = GAL_OK;
+    if (from < 0 && (st = window_from(full, mid, &from))) return st;
+    for (int k = 0; k < full->nprobe && !st; k++) st = gal_sim_measure(full, k, from, m + k), pm[k] = m + k;
+    if (st) return st;
+    for (int f = 0; f < GAL_CMP_FAMILIES; f++)
+        h->headline[f] = largest(pm, full->nprobe, mid, comp_of[f]), h->position[f] = full->probe[h->headline[f]];
+    h->from = m[0].steady_from_s;
+    return GAL_OK;
+}
+
+int gal_compare_measure(const gal_sim_result *r, const gal_compare_ref *h, gal_sim_measures *m)
+{
+    int k = h->headline[GAL_CMP_VERTICAL], st = gal_sim_measure(r, k, h->from, m);
+    for (int f = GAL_CMP_HORIZONTAL; f < GAL_CMP_FAMILIES && !st; f++) {
+        if (h->headline[f] == k) continue;
+        gal_sim_measures o;
+        int j = comp_of[f];
+        if ((st = gal_sim_measure(r, h->headline[f], h->from, &o))) break;
+        m->frequency_hz[j] = o.frequency_hz[j], m->dominant_hz[j] = o.dominant_hz[j], m->harmonic[j] = o.harmonic[j];
+        m->peak_to_peak[j] = o.peak_to_peak[j], m->rms[j] = o.rms[j], m->mean[j] = o.mean[j];
+    }
+    return st;
 }

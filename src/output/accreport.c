@@ -95,6 +95,7 @@ static void json_study(gal_json *j, const gal_acc_result *r, int s)
     gal_json_kv_str(j, "buys", S->buys);
     if (S->note[0]) gal_json_kv_str(j, "note", S->note);
     if (isfinite(S->steady_from_s)) gal_json_kv_num(j, "steady_from_s", S->steady_from_s);
+    if (isfinite(S->probe)) gal_json_kv_num(j, "probe", S->probe);
     if (isfinite(S->output_interval_s)) gal_json_kv_num(j, "output_interval_s", S->output_interval_s);
     gal_json_key(j, "rows");
     gal_json_arr_begin(j);

@@ -110,6 +110,12 @@ void gal_acc_front_json(gal_json *j, const gal_acc_result *r)
     gal_json_kv_num(j, "tolerance", r->tolerance);
     gal_json_kv_num(j, "output_interval_s", F->output_interval_s);
     gal_json_kv_num(j, "steady_from_s", F->steady_from_s);
+    gal_json_key(j, "headline_probes");
+    gal_json_obj_begin(j);
+    gal_json_kv_num(j, "vertical", F->probe[0]);
+    gal_json_kv_num(j, "horizontal", F->probe[1]);
+    gal_json_kv_num(j, "twist", F->probe[2]);
+    gal_json_obj_end(j);
     gal_json_kv_int(j, "base_elements", F->base_elements);
     gal_json_kv_num(j, "base_time_step_s", F->base_time_step_s);
     gal_json_kv_num(j, "base_newton_tolerance", F->base_newton_tol);

@@ -47,13 +47,13 @@ typedef struct gal_acc_row {
     int reference;        /* the study's reference row */
     int chosen;           /* the cheapest non-reference row with error <= tolerance */
     /* the parts of the error (NaN when they do not apply) */
-    double err_frequency; /* elements: worst over the selected modes; dynamic: dominant vertical */
-    double err_amplitude; /* dynamic: mid-span vertical peak-to-peak */
+    double err_frequency; /* elements: worst over the selected modes; dynamic: vertical fundamental */
+    double err_amplitude; /* dynamic: vertical peak-to-peak at the study's probe */
     double err_sag, err_tension; /* elements */
     double string_error;  /* elements, level span with gravity: first out-of-plane frequency
                            * against n/(2L) sqrt(H/m) (n = 1); NaN otherwise */
-    double frequency_hz;  /* elements: first selected mode; dynamic: dominant vertical */
-    double amplitude_m;   /* dynamic: vertical peak-to-peak at mid-span */
+    double frequency_hz;  /* elements: first selected mode; dynamic: vertical fundamental */
+    double amplitude_m;   /* dynamic: vertical peak-to-peak at the study's probe */
     char failed[256];     /* why the setting failed (error = +inf), or "" */
 } gal_acc_row;
 
@@ -62,6 +62,8 @@ typedef struct gal_acc_summary {
     int reference;        /* row index of the reference, -1 if none */
     int chosen;           /* row index of the chosen setting, -1 if none meets the tolerance */
     double steady_from_s; /* dynamic studies: start of the steady window (the reference's), s */
+    double probe;         /* dynamic studies: where the rows are measured, the probe of the reference's
+                           * largest vertical peak-to-peak (gal_compare_reference), fraction of the span */
     double output_interval_s; /* dynamic studies: trace sampling, s */
     char buys[512];       /* a sentence saying what the chosen setting buys */
     char note[512];       /* what went wrong on the way (a requested reference that failed), or "" */
@@ -69,11 +71,12 @@ typedef struct gal_acc_summary {
 
 /* ---- the front study ---- */
 
-/* The measures every configuration is scored on (at mid-span, over the reference's steady window;
+/* The measures every configuration is scored on (as `gallop compare` takes them: each family at the
+ * probe where the reference moves most (front.probe), over the reference's steady window;
  * amplitudes are RMS values (smooth in the discretization, and the statistic of a turbulent run);
  * in turbulent wind every measure is averaged over the seeds). */
 typedef enum {
-    GAL_ACC_M_FREQUENCY,  /* Hz: dominant frequency of the larger translation (vertical or horizontal) */
+    GAL_ACC_M_FREQUENCY,  /* Hz: fundamental frequency of the larger translation (vertical or horizontal) */
     GAL_ACC_M_VERTICAL,   /* m: vertical amplitude, RMS about the mean over the window */
     GAL_ACC_M_HORIZONTAL, /* m: horizontal amplitude (RMS) */
     GAL_ACC_M_TWIST,      /* deg: twist amplitude (RMS) */
@@ -138,6 +141,8 @@ typedef struct gal_acc_front {
     char ref_note[256];
     int nseeds;
     double output_interval_s, steady_from_s, base_time_step_s;
+    double probe[3];                      /* where the vertical, horizontal and twist measures are taken
+                                           * (gal_compare_reference of the first reference run) */
     double base_newton_tol;               /* the scene's simulation.newton_tolerance */
     int base_elements;
     /* --tolerance: the cheapest point within it, checked by a second run */

@@ -58,6 +58,22 @@ typedef struct gal_compare_figures {
  * time instead). The runs must share their probes. */
 int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, double from, gal_compare_figures *c);
 
+/* The same measure for a reference and any run measured against it (gallop accuracy, the tests of
+ * tests/rom/): the reference's window (its steady part at the probe of largest vertical
+ * peak-to-peak; from >= 0: from then) and per family the probe where it moves most, as
+ * gal_compare_runs takes them. */
+typedef struct gal_compare_ref {
+    double from;                       /* window start, s */
+    int headline[GAL_CMP_FAMILIES];    /* probe index per family: vertical, horizontal, twist */
+    double position[GAL_CMP_FAMILIES]; /* those probes, fractions of the span */
+} gal_compare_ref;
+
+int gal_compare_reference(const gal_sim_result *full, double from, gal_compare_ref *h);
+/* Run r measured over h's window: *m holds the vertical headline probe's measures, with the
+ * horizontal and twist frequency, peak-to-peak, RMS and mean taken at their own headline probes
+ * (gal_compare_figures' full and reduced records). The run must have the reference's probes. */
+int gal_compare_measure(const gal_sim_result *r, const gal_compare_ref *h, gal_sim_measures *m);
+
 #ifdef __cplusplus
 }
 #endif
