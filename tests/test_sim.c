@@ -127,8 +127,10 @@ static void test_galloping_full_vs_reduced(void)
     CHECK(gal_sim_run(&s, GAL_MODEL_FULL, &f) == GAL_OK, "%s", gal_error_message());
     CHECK(gal_sim_run(&sr, GAL_MODEL_REDUCED, &r) == GAL_OK, "%s", gal_error_message());
     gal_sim_measures mf, mr;
-    CHECK(gal_sim_measure(&f, gal_sim_mid_probe(&f), -1, &mf) == GAL_OK, "%s", gal_error_message());
-    CHECK(gal_sim_measure(&r, gal_sim_mid_probe(&r), mf.steady_from_s, &mr) == GAL_OK, "%s", gal_error_message());
+    gal_compare_ref h; /* measured as `gallop compare` measures */
+    CHECK(gal_compare_reference(&f, -1, &h) == GAL_OK && gal_compare_measure(&f, &h, &mf) == GAL_OK, "%s",
+          gal_error_message());
+    CHECK(gal_compare_measure(&r, &h, &mr) == GAL_OK, "%s", gal_error_message());
     printf("    (full: vertical p-p %.4g m at %.5g Hz, horizontal %.4g m, twist %.4g deg, steady after %.0f s;"
            " reduced: %.4g m at %.5g Hz, %.4g m, %.4g deg; wall %.2f s vs %.3f s)\n",
            mf.peak_to_peak[1], mf.frequency_hz[1], mf.peak_to_peak[0], mf.peak_to_peak[3], mf.time_to_steady_s,

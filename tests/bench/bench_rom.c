@@ -43,7 +43,8 @@ static double hstep = 0; /* --h H: the reduced model's time step (0: the scene's
 static int policy = GAL_ROM_ADD_CORRECTION | GAL_ROM_ADD_MODE, relax = 1;
 
 typedef struct {
-    gal_sim_measures mf, mr;   /* full, reduced (on the full run's steady window) */
+    gal_sim_measures mf, mr;   /* full, reduced (on the full run's steady window, as compare measures) */
+    gal_compare_ref h;         /* that window and the probes (gal_compare_reference) */
     gal_rom_sim_info info;
     double tset, tfull, trom, wfull, wrom; /* s: set-up, whole runs, integrations */
 } pair_result;
@@ -71,11 +72,11 @@ static int pair(const char *path, const char *const *ov, int nov, int deriv, gal
     p->trom = gal_wall_time() - tw;
     if (sr && !sf) printf("%s: reduced: %s\n", path, gal_error_message());
     if (!sf && !sr) {
-        int k = gal_sim_mid_probe(&rf);
-        gal_sim_measure(&rf, k, -1, &p->mf);
+        gal_compare_reference(&rf, -1, &p->h);
         double half = 0.5 * rf.time[rf.nsamples - 1]; /* the steady window: at most the last half */
-        if (p->mf.steady_from_s < half) gal_sim_measure(&rf, k, half, &p->mf);
-        gal_sim_measure(&rr, k, p->mf.steady_from_s, &p->mr);
+        if (p->h.from < half) p->h.from = half;
+        gal_compare_measure(&rf, &p->h, &p->mf);
+        gal_compare_measure(&rr, &p->h, &p->mr);
         p->wfull = rf.wall_time_s, p->wrom = rr.wall_time_s;
     }
     if (!sf) gal_sim_result_clear(&rf);
@@ -109,7 +110,8 @@ static double sem_rel(const double *x, int n)
 
 /* The full model again with the wind ramp 1 s longer (steady wind): how far its own figures move
  * (largest of the relative f, v, h, T differences; twist apart, deg). */
-static void full_spread(const char *path, const char *const *ov0, int nov0, const gal_sim_measures *mf, double *rel_max,
+static void full_spread(const char *path, const char *const *ov0, int nov0, const gal_compare_ref *h,
+                        const gal_sim_measures *mf, double *rel_max,
                         double *twist)
 {
     const char *ov[41];
@@ -125,7 +127,7 @@ static void full_spread(const char *path, const char *const *ov0, int nov0, cons
     if (gal_scene_load(&sc, path, ov, nov0 + 1, NULL) || gal_sim_setup_init(&s, &sc, 1)) return;
     if (!gal_sim_run(&s, GAL_MODEL_FULL, &r)) {
         gal_sim_measures m;
-        gal_sim_measure(&r, gal_sim_mid_probe(&r), mf->steady_from_s, &m);
+        gal_compare_measure(&r, h, &m);
         *rel_max = fmax(fmax(rel(m.frequency_hz[1], mf->frequency_hz[1]), rel(m.peak_to_peak[1], mf->peak_to_peak[1])),
                         fmax(fabs(m.peak_to_peak[0] - mf->peak_to_peak[0]) / fmax(mf->peak_to_peak[0], 0.4 * mf->peak_to_peak[1]),
                              rel(m.tension_max_steady, mf->tension_max_steady)));
@@ -159,7 +161,7 @@ static int one(const char *path, const char *const *ov0, int nov0, int deriv, do
         pair_result p;
         if (pair(path, ov, nov, deriv, &sc, &p)) return 1;
         const gal_sim_measures *m[2] = {&p.mr, &p.mf};
-        if (spread && !stat) full_spread(path, ov, nov, &p.mf, &sp, &spt);
+        if (spread && !stat) full_spread(path, ov, nov, &p.h, &p.mf, &sp, &spt);
         for (int j = 0; j < 2; j++) {
             f[j] += m[j]->frequency_hz[1] / runs, T[j] += m[j]->tension_max_steady / runs;
             for (int c = 0; c < 4; c++) a[j][c] += (stat ? m[j]->rms[c] : m[j]->peak_to_peak[c]) / runs;

@@ -18,19 +18,21 @@
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
 
-static int full_measures(const char *cache, gal_sim_setup *s, gal_sim_measures *mf)
+/* the full run's measures and its window and probes (measured as `gallop compare` measures), cached */
+static int full_measures(const char *cache, gal_sim_setup *s, gal_sim_measures *mf, gal_compare_ref *h)
 {
     FILE *f = fopen(cache, "rb");
     if (f) {
-        int ok = fread(mf, sizeof *mf, 1, f) == 1;
+        int ok = fread(mf, sizeof *mf, 1, f) == 1 && fread(h, sizeof *h, 1, f) == 1;
         fclose(f);
         if (ok) return 0;
     }
     gal_sim_result rf;
     if (gal_sim_run(s, GAL_MODEL_FULL, &rf)) return 1;
-    gal_sim_measure(&rf, gal_sim_mid_probe(&rf), -1, mf);
+    gal_compare_reference(&rf, -1, h);
+    gal_compare_measure(&rf, h, mf);
     gal_sim_result_clear(&rf);
-    if ((f = fopen(cache, "wb"))) fwrite(mf, sizeof *mf, 1, f), fclose(f);
+    if ((f = fopen(cache, "wb"))) fwrite(mf, sizeof *mf, 1, f), fwrite(h, sizeof *h, 1, f), fclose(f);
     return 0;
 }
 
@@ -52,7 +54,8 @@ int main(int argc, char **argv)
         return 1;
     }
     gal_sim_measures mf, mr;
-    if (full_measures(argv[1], &s, &mf)) { printf("ERR|full %s\n", gal_error_message()); return 1; }
+    gal_compare_ref href;
+    if (full_measures(argv[1], &s, &mf, &href)) { printf("ERR|full %s\n", gal_error_message()); return 1; }
     const gal_data *d = s.data;
     const gal_rod *rod = d->eq.rod;
     int sel[64], r = 0;
@@ -115,7 +118,7 @@ int main(int argc, char **argv)
         }
     }
     if (st) { printf("ERR|reduced %s\n", gal_error_message()); return 1; }
-    gal_sim_measure(&res, gal_sim_mid_probe(&res), mf.steady_from_s, &mr);
+    gal_compare_measure(&res, &href, &mr);
     printf("CASE|%s|%s|%s|%s|%s|%s|r=%d|f %.5g %.5g|v %.5g %.5g|h %.5g %.5g|tw %.5g %.5g|T %.6g %.6g\n", argv[2],
            argv[3], argv[4], argv[5], argv[6], argv[7], m->r, mr.frequency_hz[1], mf.frequency_hz[1],
            mr.peak_to_peak[1], mf.peak_to_peak[1], mr.peak_to_peak[0], mf.peak_to_peak[0], mr.peak_to_peak[3],

@@ -80,10 +80,11 @@ static void oracle(gal_sim_setup *s, const double *snap, int nsnap)
         fprintf(stderr, "%s\n", gal_error_message());
         return;
     }
-    int k = gal_sim_mid_probe(&rf);
+    gal_compare_ref h; /* measured as `gallop compare` measures */
     gal_sim_measures mf, mr;
-    gal_sim_measure(&rf, k, -1, &mf);
-    gal_sim_measure(&rr, k, mf.steady_from_s, &mr);
+    gal_compare_reference(&rf, -1, &h);
+    gal_compare_measure(&rf, &h, &mf);
+    gal_compare_measure(&rr, &h, &mr);
     printf("oracle basis %d (+%d misses): f %.4f/%.4f v %.3f/%.3f h %.3f/%.3f tw %.1f/%.1f T %.0f/%.0f res %.3g\n",
            info.basis, nsnap, mr.frequency_hz[1], mf.frequency_hz[1], mr.peak_to_peak[1], mf.peak_to_peak[1],
            mr.peak_to_peak[0], mf.peak_to_peak[0], mr.peak_to_peak[3], mf.peak_to_peak[3], mr.tension_max_steady,
