@@ -233,9 +233,13 @@ void gal_aero_eval(const gal_aero_table *t, double alpha, double c[3], double dc
     x += a0;
     if (x < a0) x = a0;
     if (x > a1) x = a1;             /* the spline's domain, exactly */
-    for (int i = 0; i < 3; i++) {   /* NULL accelerator: the table stays const, thread-safe */
-        c[i] = gsl_interp_eval(t->spline[i], t->alpha, t->c[i], x, NULL);
-        if (dc) dc[i] = gsl_interp_eval_deriv(t->spline[i], t->alpha, t->c[i], x, NULL);
+    /* the three splines share their nodes: one interval search (a local accelerator: the table
+     * stays const and thread-safe), found as the NULL accelerator's bisection finds it, so the
+     * values are the same numbers */
+    gsl_interp_accel acc = {0, 0, 0};
+    for (int i = 0; i < 3; i++) {
+        c[i] = gsl_interp_eval(t->spline[i], t->alpha, t->c[i], x, &acc);
+        if (dc) dc[i] = gsl_interp_eval_deriv(t->spline[i], t->alpha, t->c[i], x, &acc);
     }
 }
 

@@ -21,6 +21,7 @@ void gal_rom_hyper_free(gal_rom *m)
         free(h->set[s].Qz), free(h->set[s].Tt), free(h->set[s].Pc), free(h->set[s].qs);
     }
     free(h->T); free(h->gu); free(h->fc); free(h->Kc); free(h->snap); free(h->F0); free(h->emax);
+    free(h->whole_g); free(h->whole_f); free(h->whole_xv);
     free(h);
     m->hyper = NULL;
 }
@@ -172,7 +173,9 @@ static int hyper_alloc(gal_rom *m)
     h->fc = malloc((size_t)r * sizeof(double)), h->Kc = malloc((size_t)r * r * sizeof(double)), h->F0 = malloc((size_t)r * sizeof(double));
     h->gu = malloc((size_t)m->nq * sizeof(double));
     h->T = malloc((size_t)GAL_ROD_ELEMENT_NQ * r * sizeof(double));
-    if (st || !h->gu || !h->T || !h->fc || !h->Kc || !h->F0)
+    h->whole_g = malloc((size_t)m->nq * sizeof(double)), h->whole_f = malloc((size_t)m->nq * sizeof(double));
+    h->whole_xv = malloc((size_t)2 * r * sizeof(double));
+    if (st || !h->gu || !h->T || !h->fc || !h->Kc || !h->F0 || !h->whole_g || !h->whole_f || !h->whole_xv)
         return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sample (basis %d)", r);
     return GAL_OK;
 }
@@ -279,13 +282,22 @@ int gal_rom_hyper_check(gal_rom *m, double *err)
     double e = 0, *fa = m->fr, *fb = m->res; /* scratch between steps */
     if (err) *err = 0;
     if (!h) return GAL_OK;
-    /* the internal force, against its change from the equilibrium */
-    if ((st = gal_rom_exact_force(m, m->x, fa)) || (st = gal_rom_hyper_internal(m, m->x, fb, NULL))) return st;
+    /* the internal force, against its change from the equilibrium (the whole rod's gradient kept
+     * for the self-check at this state) */
+    h->whole_has = 0;
+    if ((st = gal_rom_exact_force(m, m->x, fa))) return st;
+    memcpy(h->whole_g, m->gq, (size_t)m->nq * sizeof(double));
+    memcpy(h->whole_xv, m->x, (size_t)r * sizeof(double)), memcpy(h->whole_xv + r, m->v, (size_t)r * sizeof(double));
+    h->whole_t = m->t, h->whole_has = 1;
+    if ((st = gal_rom_hyper_internal(m, m->x, fb, NULL))) return st;
     for (int k = 0; k < r; k++) fb[k] -= fa[k], fa[k] -= h->F0[k];
     double den = wnorm(h->set[0].rw, fa, r);
     if (den > 0) e = wnorm(h->set[0].rw, fb, r) / den;
     if (h->loads) {
-        if ((st = exact_loads(m, fa)) || (st = gal_rom_hyper_external(m, m->t, m->x, m->v, fb))) return st;
+        if ((st = exact_loads(m, fa))) return st;
+        memcpy(h->whole_f, m->fq, (size_t)m->nq * sizeof(double));
+        h->whole_has = 2;
+        if ((st = gal_rom_hyper_external(m, m->t, m->x, m->v, fb))) return st;
         for (int k = 0; k < r; k++) fb[k] -= fa[k];
         den = wnorm(h->set[1].rw, fa, r);
         if (den > 0) e = fmax(e, wnorm(h->set[1].rw, fb, r) / den);
@@ -301,6 +313,18 @@ int gal_rom_hyper_check(gal_rom *m, double *err)
     m->U = m->U1;
     if (h->loads && (st = gal_rom_hyper_external(m, m->t, m->x, m->v, m->fe))) return st;
     return GAL_OK;
+}
+
+int gal_rom_hyper_whole(const gal_rom *m, const double **g, const double **f)
+{
+    const gal_rom_hyper *h = m->hyper;
+    size_t br = (size_t)m->r * sizeof(double);
+    *g = *f = NULL;
+    if (!h || !h->whole_has || h->whole_t != m->t || memcmp(h->whole_xv, m->x, br) || memcmp(h->whole_xv + m->r, m->v, br))
+        return 0;
+    *g = h->whole_g;
+    if (h->whole_has == 2) *f = h->whole_f;
+    return 1;
 }
 
 int gal_rom_hyper_use_all(gal_rom *m)

@@ -45,7 +45,17 @@ typedef struct gal_rom_hyper {
     double check_error;
     long train_element_evals;  /* element evaluations of the fits' candidate columns, in all */
     long train_full_evals;     /* evaluations of the whole rod or loads for the fits' targets */
+    /* the sample check's evaluation of the whole rod (and loads) at the state reached, kept for the
+     * self-check at the same state (rom_check.c: both come every gal_rom_check_interval) */
+    double *whole_g, *whole_f; /* nq: grad U(q) and the loads F(t, q, v) at q = q_eq + V x */
+    double *whole_xv;          /* 2 r: the state (x, v) they are of */
+    double whole_t;            /* s: its time */
+    int whole_has;             /* 0: none held; 1: the gradient; 2: the gradient and the loads */
 } gal_rom_hyper;
+
+/* The whole rod's gradient (*g) and loads (*f: NULL when not held) that the last sample check
+ * evaluated, when they are of m's current state (t, x, v) exactly; else 0 and *g = *f = NULL. */
+int gal_rom_hyper_whole(const gal_rom *m, const double **g, const double **f);
 
 /* Training state s (deterministic in s) into x and its velocity into v (r each). */
 int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);

@@ -17,6 +17,7 @@
 
 #include "base/chol.h"
 #include "gallop/base/vec3.h"
+#include "reduced/hyper.h"
 
 enum { TERM_R, TERM_MA, TERM_CV, TERM_G, TERM_F, NTERM };
 
@@ -72,10 +73,14 @@ static void accumulate(const gal_rom *m, const double *y, const double *z, const
  * node, would cause (horizontally: the span swung by about that fraction of its sag). Below it a
  * motion is no scale for the residual: a still span's round-off is no alarm, and a residual is an
  * alarm only past the tolerance times the response to that load. 0 without gravity. load, du: n. */
-static int scale_floors(const gal_rom *m, double *load, double *du, double floor[GAL_FAMILY_COUNT])
+static int scale_floors(gal_rom *m, double *load, double *du, double floor[GAL_FAMILY_COUNT])
 {
     const gal_rod *rod = m->rod;
     static const gal_family fam[3] = {GAL_FAMILY_VERTICAL, GAL_FAMILY_HORIZONTAL, GAL_FAMILY_AXIAL};
+    if (m->check_floor_set) { /* constants of the model: computed at its first check */
+        memcpy(floor, m->check_floor, sizeof m->check_floor);
+        return GAL_OK;
+    }
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) floor[f] = 0;
     if (!(rod->p.gravity > 0)) return GAL_OK;
     for (int k = 0; k < 3; k++) {
@@ -93,6 +98,8 @@ static int scale_floors(const gal_rom *m, double *load, double *du, double floor
         accumulate(m, du, du, rod->mdiag, acc);
         floor[fam[k]] = sqrt(acc[fam[k]]);
     }
+    memcpy(m->check_floor, floor, sizeof m->check_floor);
+    m->check_floor_set = 1;
     return GAL_OK;
 }
 
@@ -115,9 +122,15 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     gal_rod_mass_mult(rod, af, y[TERM_MA]);
     if (m->o.damping) gal_damping_apply(m->o.damping, vf, y[TERM_CV]); /* y is zeroed */
     gal_rom_reconstruct(m, NULL, NULL); /* into m->q, m->vq */
-    if ((st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL))) goto done;
-    memset(m->fq, 0, (size_t)m->nq * sizeof(double));
-    if (m->force.eval && (st = m->force.eval(m->force.ctx, m->t, m->q, m->vq, m->fq))) goto done;
+    const double *wg, *wf; /* the sample check's at this state, when it came at the same step */
+    gal_rom_hyper_whole(m, &wg, &wf);
+    if (wg) memcpy(m->gq, wg, (size_t)m->nq * sizeof(double));
+    else if ((st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL))) goto done;
+    if (wf) memcpy(m->fq, wf, (size_t)m->nq * sizeof(double));
+    else {
+        memset(m->fq, 0, (size_t)m->nq * sizeof(double));
+        if (m->force.eval && (st = m->force.eval(m->force.ctx, m->t, m->q, m->vq, m->fq))) goto done;
+    }
     gal_rod_gather(rod, m->gq, y[TERM_G]);
     gal_rod_gather(rod, m->fq, y[TERM_F]);
     for (int d = 0; d < n; d++) y[TERM_R][d] = y[TERM_MA][d] + y[TERM_CV][d] + y[TERM_G][d] - y[TERM_F][d];

@@ -166,6 +166,9 @@ typedef struct gal_rom {
     double *fr;             /* r: scratch */
     double *fe_prev;        /* r: the loads of the step before (o.loads_once's extrapolation) */
     double hfe;             /* s: the step that led to fe from fe_prev (0: none since the start) */
+    double check_floor[GAL_FAMILY_COUNT]; /* the self-check's scale floors (rom_check.c), computed
+                             * once: they depend on the equilibrium, K0 and the masses alone */
+    int check_floor_set;    /* 1: check_floor holds them */
 } gal_rom;
 
 void gal_rom_default_opts(gal_rom_opts *o);
