@@ -345,13 +345,20 @@ int gal_rom_step(gal_rom *m)
     /* the sample against the exact projected forces every hyper_check_interval */
     if (m->hyper && m->o.hyper_check_interval > 0 && m->t >= m->next_hyper_check - 1e-3 * m->o.h) {
         m->next_hyper_check = m->t + gal_rom_check_interval(m, m->o.hyper_check_interval);
-        long e0 = m->element_evaluations, l0 = m->load_element_evaluations;
-        st = gal_rom_hyper_check(m, NULL); /* the exact forces over the whole rod, and the sample's */
-        m->check_element_evaluations += gal_rod_element_count(m->rod) + (m->hyper->loads ? m->rod->p.elements : 0) +
-                                        m->element_evaluations - e0 + m->load_element_evaluations - l0;
-        m->element_evaluations = e0, m->load_element_evaluations = l0;
-        if (st) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
+        return gal_rom_sample_check(m);
     }
+    return GAL_OK;
+}
+
+int gal_rom_sample_check(gal_rom *m)
+{
+    if (!m->hyper) return GAL_OK;
+    long e0 = m->element_evaluations, l0 = m->load_element_evaluations;
+    int st = gal_rom_hyper_check(m, NULL); /* the exact forces over the whole rod, and the sample's */
+    m->check_element_evaluations += gal_rod_element_count(m->rod) + (m->hyper->loads ? m->rod->p.elements : 0) +
+                                    m->element_evaluations - e0 + m->load_element_evaluations - l0;
+    m->element_evaluations = e0, m->load_element_evaluations = l0;
+    if (st) return gal_error(st, "at t = %.6g s: %s", m->t, gal_error_message());
     return GAL_OK;
 }
 

@@ -80,6 +80,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     ro.rho_inf = o->rho_inf;
     if (o->newton_tol > 0) ro.newton_tol = o->newton_tol;
     ro.damping = d->damping; /* the structural damping of the pipeline */
+    ro.hyper_check_interval = 0; /* the sample's check comes with the self-check (rom_advance) */
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */
     s->m = m;
@@ -147,6 +148,13 @@ static int rom_advance(void *state, double t_out, double t_end)
         return gal_error(st, "reduced model (basis %d): %s", s->rom->r, why);
     }
     if (s->rom->t >= s->next_check - 1e-9 || t_out >= t_end) {
+        /* the sample's check on the self-check's schedule (not at the start), at its state: the
+         * self-check takes the whole rod's gradient and loads from it */
+        if (s->next_check > 0 && s->rom->t >= s->next_check - 1e-9 && (st = gal_rom_sample_check(s->rom))) {
+            char why[256];
+            snprintf(why, sizeof why, "%s", gal_error_message());
+            return gal_error(st, "reduced model (basis %d): %s", s->rom->r, why);
+        }
         st = self_check(s);
         double dt = gal_rom_check_interval(s->rom, CHECK_INTERVAL); /* longer on fine meshes */
         while (s->next_check <= s->rom->t + 1e-9) s->next_check += dt;

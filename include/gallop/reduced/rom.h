@@ -201,6 +201,12 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v);
 /* One step of o.h (retried in halves, GAL_ROM_HALVINGS deep, when Newton fails or the rod
  * degenerates); GAL_EFAIL with time and reason when even the smallest fails. */
 int gal_rom_step(gal_rom *m);
+/* The sample's check now (gal_rom_hyper_check, ecsw.h: re-sampled past o.hyper_check_tol), counted
+ * in check_element_evaluations; what gal_rom_step does every o.hyper_check_interval. A caller that
+ * schedules it itself (o.hyper_check_interval = 0) puts it at the state of its self-check
+ * (gal_rom_residual), which then takes the whole rod's gradient and loads from it. GAL_OK without
+ * a sample. */
+int gal_rom_sample_check(gal_rom *m);
 /* The checks' share of the element evaluations: a check (the sample's, gal_rom_hyper_check, or the
  * full residual, gal_rom_residual) evaluates the whole rod and its loads, a step only the samples
  * (the energy's twice, Newton's usual passes; the loads once, o.loads_once): on a fine mesh the
