@@ -4,6 +4,8 @@
 #include "check.h"
 #include "gallop.h"
 
+#include <gsl/gsl_interp.h>
+#include <math.h>
 #include <unistd.h>
 
 #ifndef M_PI
@@ -164,6 +166,26 @@ static void test_load_derivative_fd(void)
             for (int i = 0; i < 3; i++) CHECK_NEAR(df[3 * i + j], (fp[i] - fm[i]) / (2 * h), 1e-6 * scale);
             CHECK_NEAR(dm[j], (mp - mm) / (2 * h), 1e-6 * scale);
         }
+    }
+    gal_aero_table_free(t);
+}
+
+/* gal_aero_eval's one interval search for the three coefficients (a local accelerator) gives GSL's
+ * own accelerator-free values, bit for bit, over several periods. */
+static void test_eval_one_search(void)
+{
+    gal_aero_table *t = irregular_table();
+    for (int k = 0; k <= 720; k++) {
+        double al = -7.0 + 14.0 * k / 720, c[3], dc[3];
+        gal_aero_eval(t, al, c, dc);
+        double x = al - t->alpha[0];
+        x -= 2 * M_PI * floor(x / (2 * M_PI));
+        x += t->alpha[0];
+        if (x > t->alpha[t->n - 1]) x = t->alpha[t->n - 1];
+        for (int i = 0; i < 3; i++)
+            CHECK(c[i] == gsl_interp_eval(t->spline[i], t->alpha, t->c[i], x, NULL) &&
+                  dc[i] == gsl_interp_eval_deriv(t->spline[i], t->alpha, t->c[i], x, NULL),
+                  "coefficient %d at %.4f rad: GSL's values", i, al);
     }
     gal_aero_table_free(t);
 }
@@ -426,6 +448,7 @@ int main(void)
     RUN(test_derivative_fd);
     RUN(test_load_directions);
     RUN(test_load_derivative_fd);
+    RUN(test_eval_one_search);
     RUN(test_den_hartog);
     RUN(test_shipped_tables);
     RUN(test_interpolant_bounds);
