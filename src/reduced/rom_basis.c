@@ -1,9 +1,10 @@
 /* rom_basis.c: the basis of the recomputed reduced model (rom.h): the selected modes and their
  * static modal derivatives theta_ij = -K0^-1 (dK/d eta_j) phi_i, the directional derivative of the
- * tangent by central differences of gal_rod_eval's tangent along phi_j and one factorization of
- * K0; then M-orthonormalized (modified Gram-Schmidt, twice) and deflated. Also the model's
- * allocation: its wind-independent set-up (gal_rom_setup_alloc), copied for another wind, then
- * the rest (the loads' sample, the damping, the start); and its reduced matrices. */
+ * tangent by central differences of gal_rod_eval's tangent along phi_j (the two tangents'
+ * difference taken entry by entry) and one factorization of K0; then M-orthonormalized (classical
+ * Gram-Schmidt twice, as BLAS products) and deflated. Also the model's allocation: its
+ * wind-independent set-up (gal_rom_setup_alloc), copied for another wind, then the rest (the loads'
+ * sample, the damping, the start); and its reduced matrices. */
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
 
@@ -16,11 +17,18 @@
 #include "reduced/hyper.h"
 #include "reduced/qm.h"
 
+/* the BLAS (column-major) */
+void dgemv_(const char *trans, const int *m, const int *n, const double *alpha, const double *a, const int *lda,
+            const double *x, const int *incx, const double *beta, double *y, const int *incy);
+void dgemm_(const char *ta, const char *tb, const int *m, const int *n, const int *k, const double *alpha,
+            const double *a, const int *lda, const double *b, const int *ldb, const double *beta, double *c,
+            const int *ldc);
+
 void gal_rom_default_opts(gal_rom_opts *o)
 {
     memset(o, 0, sizeof *o);
     o->derivatives = 1;
-    o->deflation_tol = 1e-6;
+    o->deflation_tol = 1e-6, o->derivative_floor = 0;
     o->fd_step_m = 1e-3;
     o->h = 0.01;
     o->rho_inf = 1.0;
@@ -58,18 +66,20 @@ static double dot(const double *a, const double *b, int n)
 }
 
 /* Append candidate c (overwritten) to the M-orthonormal columns V[0..*r-1] (MV their M-images)
- * unless what is left after orthogonalization is below tol of its M-norm. */
-static void orth_append(const gal_rod *rod, double *V, double *MV, int *r, double *c, double *Mc, double tol)
+ * unless what is left after orthogonalization is below tol of its M-norm: classical Gram-Schmidt
+ * twice (CGS2, as orthogonal to working precision as modified Gram-Schmidt twice), each pass two
+ * matrix-vector products p = MV^T c, c -= V p; p: *r scratch. */
+static void orth_append(const gal_rod *rod, double *V, double *MV, int *r, double *c, double *Mc, double tol, double *p)
 {
-    int n = rod->ndof;
+    int n = rod->ndof, one = 1;
+    double a = 1, b = 0, mb = -1;
     gal_rod_mass_mult(rod, c, Mc);
     double n0 = sqrt(fmax(dot(c, Mc, n), 0));
     if (!(n0 > 0)) return;
-    for (int pass = 0; pass < 2; pass++)
-        for (int k = 0; k < *r; k++) {
-            double p = dot(MV + (size_t)k * n, c, n);
-            for (int d = 0; d < n; d++) c[d] -= p * V[(size_t)k * n + d];
-        }
+    for (int pass = 0; pass < 2 && *r > 0; pass++) {
+        dgemv_("T", &n, r, &a, MV, &n, c, &one, &b, p, &one);
+        dgemv_("N", &n, r, &mb, V, &n, p, &one, &a, c, &one);
+    }
     gal_rod_mass_mult(rod, c, Mc);
     double n1 = sqrt(fmax(dot(c, Mc, n), 0));
     if (!(n1 > tol * n0)) return;
@@ -94,44 +104,65 @@ int gal_rom_tangents_along(const gal_rom *m, const double *phi, gal_csc *Kp, gal
     return st;
 }
 
-/* yp = Kp x and ym = Km x for two symmetric matrices of one pattern (upper triangles) in one pass,
- * each in gal_csc_symv's order (its round-off). */
-static void symv2(const gal_csc *Kp, const gal_csc *Km, const double *x, double *yp, double *ym)
+/* Y = D X for the symmetric D on K's pattern (its upper triangle's values dv) and the k columns of
+ * X (n each), in one pass over D; each column summed in gal_csc_symv's order. */
+static void symv_multi(const gal_csc *K, const double *dv, const double *X, int k, double *Y)
 {
-    memset(yp, 0, (size_t)Kp->n * sizeof(double));
-    memset(ym, 0, (size_t)Kp->n * sizeof(double));
-    for (int j = 0; j < Kp->n; j++)
-        for (int p = Kp->colptr[j]; p < Kp->colptr[j + 1]; p++) {
-            int i = Kp->rowind[p];
-            double a = Kp->val[p], b = Km->val[p];
-            yp[i] += a * x[j], ym[i] += b * x[j];
-            if (i != j) yp[j] += a * x[i], ym[j] += b * x[i];
+    int n = K->n;
+    memset(Y, 0, (size_t)n * k * sizeof(double));
+    for (int j = 0; j < n; j++)
+        for (int p = K->colptr[j]; p < K->colptr[j + 1]; p++) {
+            int i = K->rowind[p];
+            double a = dv[p];
+            for (int c = 0; c < k; c++) {
+                const double *x = X + (size_t)c * n;
+                double *y = Y + (size_t)c * n;
+                y[i] += a * x[j];
+                if (i != j) y[j] += a * x[i];
+            }
         }
 }
 
-/* The modal derivatives of the nsel modes (columns of V) appended to V. */
-static int derivatives(gal_rom *m, double *MV, int nsel)
+/* The modal derivatives of the nsel modes (columns of V) appended to V: for each j the tangents
+ * along phi_j, their difference dK = Kp - Km taken entry by entry (exact, Sterbenz's lemma: the two
+ * agree to O(e); the products' difference Kp phi - Km phi added eps |K| |phi| of round-off to
+ * |dK phi| ~ 1e-6 |K| |phi|; what remains is the round-off of the tangents' own evaluation), then
+ * theta_ij = -K0^-1 dK phi_i / (2 e), i <= j, all i in one pass over dK. With o.derivative_floor > 0
+ * those whose M-norm is under that share of the largest one's are left out: on a conductor, the
+ * couplings through the twist (whose mass norm is ~1e-3 of the translations'), tiny and real (the
+ * same to 4 digits for steps from 1e-2 to 1e-5 m); what Gram-Schmidt leaves of them, normalized,
+ * changes with the mesh (iced_gallop, theta of the torsional mode with itself, 8e-9 of the largest:
+ * a 4 Hz vertical wave at 40 elements, a spike at the nodes next to the supports, 89 Hz, at 600).
+ * Off by default: 1e-4 brings iced_gallop's twist at 600/800 elements within 3.5% but the 40-element
+ * 5:1 twist resonance needs them (BENCHMARKS.md, helper basis). scratch: r entries. */
+static int derivatives(gal_rom *m, double *MV, int nsel, double *scratch)
 {
     const gal_rod *rod = m->rod;
-    int n = m->ndof, nq = m->nq, st = GAL_OK;
+    int n = m->ndof, nq = m->nq, st = GAL_OK, nnz = rod->K->colptr[n], np = nsel * (nsel + 1) / 2;
     gal_csc *Kp = gal_csc_clone(rod->K), *Km = gal_csc_clone(rod->K);
-    gal_chol *ch = m->chol0;
-    double *w = malloc((size_t)4 * n * sizeof(double)), *qp = malloc((size_t)nq * sizeof(double));
-    if (!Kp || !Km || !w || !qp) { st = gal_error(GAL_ENOMEM, "reduced model: out of memory"); goto done; }
-    for (int j = 0; j < nsel && !st; j++) {
+    double *W = malloc((size_t)(np + 1) * n * sizeof(double)), *qp = malloc((size_t)nq * sizeof(double));
+    double *nrm = malloc((size_t)np * sizeof(double)), big = 0;
+    if (!Kp || !Km || !W || !qp || !nrm) { st = gal_error(GAL_ENOMEM, "reduced model: out of memory"); goto done; }
+    double *Mw = W + (size_t)np * n;
+    for (int j = 0, p0 = 0; j < nsel && !st; p0 += ++j) {
         double e;
-        st = gal_rom_tangents_along(m, m->V + (size_t)j * n, Kp, Km, qp, &e);
+        if ((st = gal_rom_tangents_along(m, m->V + (size_t)j * n, Kp, Km, qp, &e))) break;
+        for (int p = 0; p < nnz; p++) Kp->val[p] -= Km->val[p];
+        symv_multi(Kp, Kp->val, m->V, j + 1, W + (size_t)p0 * n);
         for (int i = 0; i <= j && !st; i++) {
-            const double *pi = m->V + (size_t)i * n;
-            symv2(Kp, Km, pi, w, w + n);
-            for (int d = 0; d < n; d++) w[d] = -(w[d] - w[n + d]) / (2 * e);
-            if ((st = gal_chol_solve(ch, w, w))) break;
-            orth_append(rod, m->V, MV, &m->r, w, w + 2 * n, m->o.deflation_tol);
+            double *w = W + (size_t)(p0 + i) * n;
+            for (int d = 0; d < n; d++) w[d] = -w[d] / (2 * e);
+            if ((st = gal_chol_solve(m->chol0, w, w))) break;
+            gal_rod_mass_mult(rod, w, Mw);
+            nrm[p0 + i] = sqrt(fmax(dot(w, Mw, n), 0)), big = fmax(big, nrm[p0 + i]);
         }
     }
+    for (int p = 0; p < np && !st; p++)
+        if (nrm[p] >= m->o.derivative_floor * big)
+            orth_append(rod, m->V, MV, &m->r, W + (size_t)p * n, Mw, m->o.deflation_tol, scratch);
 done:
     gal_csc_free(Kp); gal_csc_free(Km);
-    free(w); free(qp);
+    free(W); free(qp); free(nrm);
     return st;
 }
 
@@ -176,6 +207,21 @@ void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, dou
     }
 }
 
+/* K0r = V^T K0 V at the set-up: the r products K0 v_j, then one dgemm (the upper triangle kept and
+ * mirrored: exactly symmetric). */
+static int project_K0(gal_rom *m)
+{
+    int n = m->ndof, r = m->r;
+    double one = 1, zero = 0, *KV = malloc((size_t)n * r * sizeof(double));
+    if (!KV) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    for (int j = 0; j < r; j++) gal_csc_symv(m->K0, m->V + (size_t)j * n, KV + (size_t)j * n);
+    dgemm_("T", "N", &r, &r, &n, &one, m->V, &n, KV, &n, &zero, m->K0r, &r);
+    for (int j = 0; j < r; j++)
+        for (int i = 0; i < j; i++) m->K0r[i * r + j] = m->K0r[j * r + i];
+    free(KV);
+    return GAL_OK;
+}
+
 /* The Newton test's force scales: |V^T (node weights in every direction)| and eps L EA/l0 times the
  * largest column sum of |V|. */
 static void force_scales(gal_rom *m)
@@ -202,7 +248,7 @@ static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, cons
     m->ndof = rod->ndof, m->nq = rod->nq, m->nmodes = nsel;
     int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + (m->o.nextra > 0 ? m->o.nextra : 0);
     if (m->o.manifold) rmax += 3; /* the static vectors (qm.h) */
-    double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc((size_t)2 * n * sizeof(double));
+    double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc(((size_t)2 * n + rmax) * sizeof(double));
     m->omega2 = malloc((size_t)nsel * sizeof(double)), m->setup_sel = malloc((size_t)nsel * sizeof(int));
     if (!MV || !c || !m->omega2 || !m->setup_sel) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
     if (!st) st = alloc_state(m, rmax);
@@ -221,7 +267,7 @@ static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, cons
         m->omega2[k] = md->mode[sel[k]].omega * md->mode[sel[k]].omega;
         memcpy(c, md->shape + (size_t)sel[k] * n, (size_t)n * sizeof(double));
         int r0 = m->r;
-        orth_append(rod, m->V, MV, &m->r, c, c + n, 1e-3);
+        orth_append(rod, m->V, MV, &m->r, c, c + n, 1e-3, c + 2 * n);
         if (m->r == r0) { st = gal_error(GAL_EFAIL, "reduced model: mode %d repeats the others", sel[k]); goto done; }
     }
     if (m->o.manifold && m->o.nextra > 0) {
@@ -230,13 +276,13 @@ static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, cons
     }
     if (m->o.manifold && (st = gal_rom_qm_static(m, MV))) goto done;
     m->o.mean_load = NULL; /* not owned */
-    if (m->o.derivatives && (st = m->o.manifold ? gal_rom_qm_build(m) : derivatives(m, MV, nsel))) goto done;
+    if (m->o.derivatives && (st = m->o.manifold ? gal_rom_qm_build(m) : derivatives(m, MV, nsel, c + 2 * n))) goto done;
     for (int k = 0; k < m->o.nextra; k++) {
         memcpy(c, m->o.extra + (size_t)k * n, (size_t)n * sizeof(double));
-        orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol);
+        orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol, c + 2 * n);
     }
     m->o.extra = NULL; /* not owned: not kept past the build */
-    gal_rom_project_tangent(m, m->K0, m->K0r, c);
+    if ((st = project_K0(m))) goto done;
     force_scales(m);
     /* the sample (ecsw.h); a rod with a term that has no element split (an equivalent bundle's
      * differential-stretch fields, src/rod/bundle_irvine.c) is projected exactly */
@@ -277,7 +323,7 @@ static int setup_matches(const gal_rom *s, const gal_rod *rod, const double *q_e
     return s->rod == rod && s->setup_shape == md->shape && s->setup_nsel == nsel && !s->qm && !o->manifold &&
            !memcmp(s->setup_sel, sel, (size_t)nsel * sizeof(int)) && o->nextra <= 0 && a->nextra <= 0 &&
            !memcmp(s->q_eq, q_eq, (size_t)rod->nq * sizeof(double)) && a->derivatives == o->derivatives &&
-           a->deflation_tol == o->deflation_tol && a->fd_step_m == o->fd_step_m && a->hyper == o->hyper &&
+           a->deflation_tol == o->deflation_tol && a->derivative_floor == o->derivative_floor && a->fd_step_m == o->fd_step_m && a->hyper == o->hyper &&
            a->hyper_tol == o->hyper_tol && a->hyper_twist == o->hyper_twist && a->hyper_snapshots == o->hyper_snapshots;
 }
 

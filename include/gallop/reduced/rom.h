@@ -50,6 +50,9 @@ typedef struct gal_rom_opts {
                              * parts' apart */
     double deflation_tol;   /* drop a basis vector whose M-norm falls below this share after
                              * orthogonalization; default 1e-6 */
+    double derivative_floor; /* leave out a modal derivative whose M-norm is below this share of
+                             * the largest derivative's: at equal modal amplitudes it carries less
+                             * of the quadratic motion (rom_basis.c); default 0: keep all */
     double fd_step_m;       /* m: largest translation of the finite-difference steps; default 1e-3 */
     double h;               /* s: time step; default 0.01 */
     double rho_inf;         /* generalized-alpha spectral radius at infinite frequency; default 1 */
