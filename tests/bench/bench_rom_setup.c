@@ -1,0 +1,93 @@
+/* bench_rom_setup.c: the reduced model's own set-up alone (gal_rom_alloc after statics and modes:
+ * the basis, V^T K0 V, the samples, the damping, the start), CPU time of this process, median of 21
+ * builds at 100 and at 1000 elements, the two meshes alternated (the machine is shared: run it
+ * with OPENBLAS_NUM_THREADS=1, as the command line does). Usage: bench_rom_setup [SCENE]
+ * (default tests/rom/drake_200_level_dshape.ini). Prints BENCH| lines (make bench). */
+#include "gallop.h"
+#include "gallop/run/sim.h"
+#include "gallop/scene/scene.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double cpu(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static int cmpd(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+typedef struct {
+    gal_scene sc;
+    gal_sim_setup s;
+    int sel[64], r;
+    gal_rom_opts ro;
+    gal_force F;
+} mesh;
+
+static int init(mesh *M, const char *path, int nel)
+{
+    char e[64];
+    snprintf(e, sizeof e, "model.elements=%d", nel);
+    const char *ov[1] = {e};
+    if (gal_scene_load(&M->sc, path, ov, 1, NULL) || gal_sim_setup_init(&M->s, &M->sc, 1)) {
+        printf("%s\n", gal_error_message());
+        return 1;
+    }
+    const gal_data *dt = M->s.data;
+    double fhi = 0;
+    M->r = 0;
+    for (int k = 0; k < dt->md.n && M->r < 64; k++)
+        if (dt->md.mode[k].selected) M->sel[M->r++] = k, fhi = fmax(fhi, dt->md.mode[k].frequency_hz);
+    double dt_out =
+        M->sc.simulation.output_interval > 0 ? M->sc.simulation.output_interval : fmin(0.05, 1.0 / (10 * fhi));
+    double h = M->sc.simulation.time_step > 0 ? M->sc.simulation.time_step : fmin(dt_out, 1.0 / (40 * fhi));
+    gal_rom_default_opts(&M->ro);
+    M->ro.h = dt_out / ceil(dt_out / h - 1e-9);
+    M->ro.rho_inf = M->sc.simulation.rho_inf;
+    M->ro.damping = dt->damping;
+    memset(&M->F, 0, sizeof M->F);
+    if (dt->loads.table) M->F.eval = gal_loads_full, M->F.element = gal_loads_element, M->F.ctx = (void *)&dt->loads;
+    return 0;
+}
+
+static double once(mesh *M)
+{
+    const gal_data *dt = M->s.data;
+    double t0 = cpu();
+    gal_rom *m = gal_rom_alloc(dt->eq.rod, dt->eq.q, &dt->md, M->sel, M->r, &M->ro, &M->F);
+    double t = cpu() - t0;
+    if (!m) {
+        printf("%s\n", gal_error_message());
+        exit(1);
+    }
+    gal_rom_free(m);
+    return t;
+}
+
+int main(int argc, char **argv)
+{
+    const char *path = argc > 1 ? argv[1] : "tests/rom/drake_200_level_dshape.ini";
+    static mesh a, b;
+    if (init(&a, path, 100) || init(&b, path, 1000)) return 1;
+    enum { R = 21 };
+    double ta[R], tb[R];
+    for (int k = 0; k < R; k++)
+        ta[k] = once(&a), tb[k] = once(&b);
+    qsort(ta, R, sizeof(double), cmpd), qsort(tb, R, sizeof(double), cmpd);
+    printf("%s: set-up 100 el %.2f ms, 1000 el %.2f ms, ratio %.2f\n", path, 1e3 * ta[R / 2], 1e3 * tb[R / 2],
+           tb[R / 2] / ta[R / 2]);
+    printf("BENCH|reduced set-up alone at 100 elements (CPU, median of %d)|%.2f|ms|%s|\n", R, 1e3 * ta[R / 2], path);
+    printf("BENCH|reduced set-up alone at 1000 elements (CPU, median of %d)|%.2f|ms|%s|\n", R, 1e3 * tb[R / 2], path);
+    printf("BENCH|reduced set-up alone, 1000 over 100 elements (target <= 3)|%.2f|x|%s|\n", tb[R / 2] / ta[R / 2],
+           path);
+    return 0;
+}
