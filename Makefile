@@ -33,7 +33,7 @@ DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-de
             liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox jq libopenmpi-dev openmpi-bin
 STAMP    := build/.deps-ok
 
-.PHONY: all deps demo check bench report report-bundle-grid report-bundle-partner clean fuzz mutate install
+.PHONY: all deps demo check bench report report-bundle-grid report-bundle-partner report-spanset clean fuzz mutate install
 all: $(BUILD)/gallop $(BUILD)/libgallop.a
 
 # ---- Debian packages ----
@@ -167,6 +167,11 @@ report-bundle-grid: $(BUILD)/gallop
 # the twin's reduced model against its full model, 300 s (BEFORE=path of an older gallop to compare)
 report-bundle-partner: $(BUILD)/gallop
 	@bash notebooks-free-reports/bundle_partner.sh $(BUILD)/gallop out/report $(BEFORE)
+
+# issue 13's figures over tests/rom/ (accuracy at the own mesh, 100 and 125 elements; CPU speed at 100,
+# 125, 400), 20-60 min; JOBS=2 runs two processes at a time (BENCHMARKS.md "span set, re-measured")
+report-spanset: $(BUILD)/gallop
+	@bash tests/bench/spanset.sh $(BUILD)/gallop out/spanset
 
 clean:
 	rm -rf build out
