@@ -116,7 +116,7 @@ if [ "$STAGE" != table ]; then
     echo "commit: $(git rev-parse --short HEAD 2>/dev/null)$(git diff --quiet HEAD -- src include 2>/dev/null || echo ' (src modified)')"
     echo "machine: $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
     echo "started: $(date -u +%FT%TZ), load: $(cut -d' ' -f1-3 /proc/loadavg)"
-  } >"$out/meta"
+  } >>"$out/meta"   # appended: a resumed run keeps the first start
   tasks | xargs -P "$JOBS" -I{} bash -c 'one_task "$@"' _ {}
   echo "finished: $(date -u +%FT%TZ), load: $(cut -d' ' -f1-3 /proc/loadavg)" >>"$out/meta"
 fi
