@@ -70,6 +70,10 @@ static void summary_bundle(gal_json *j, const gal_bundle *b)
     gal_json_kv_str(j, "model", "explicit");
     gal_json_kv_int(j, "subconductors", b->n);
     gal_json_kv_int(j, "spacers", b->ns);
+    gal_json_key(j, "spacer_positions");
+    gal_json_arr_begin(j);
+    for (int sp = 0; sp < b->ns; sp++) gal_json_num(j, (double)b->spnode[sp] / (b->nn - 1));
+    gal_json_arr_end(j);
     gal_json_kv_num(j, "radius_m", b->bp.radius);
     gal_json_kv_num(j, "asymmetry_m", b->asymmetry);
     gal_json_kv_str(j, "figures", "sag, tensions and unstretched length are one sub-conductor's (sub-conductor 1)");

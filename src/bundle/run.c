@@ -12,6 +12,7 @@ void gal_bundle_params_of(const gal_scene *sc, gal_bundle_params *bp)
     bp->radius = sc->bundle.radius;
     bp->orientation = sc->bundle.orientation;
     bp->spacers = sc->bundle.spacers;
+    bp->positions = sc->bundle.nspacer_positions ? sc->bundle.spacer_positions : NULL;
     bp->spacer_mass = sc->bundle.spacer_mass;
     bp->spacer_inertia = sc->bundle.spacer_inertia;
 }

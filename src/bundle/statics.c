@@ -154,7 +154,11 @@ int gal_bundle_statics(const gal_rod_params *p, const gal_bundle_params *bp, gal
     else gal_statics_default_opts(&opts);
     *out = NULL;
     gal_rod_params p1 = *p;
-    p1.elements = gal_bundle_elements(p->elements, bp->spacers);
+    p1.elements = gal_bundle_mesh(p->elements, bp);
+    if (p1.elements <= 0)
+        return gal_error(GAL_EINPUT, "bundle: no mesh of %d to 1000 elements puts each of the %d spacers within "
+                         "%g of the span of a node with 2 elements between them", p->elements, bp->spacers,
+                         GAL_BUNDLE_SNAP);
     gal_equilibrium eq1; /* one sub-conductor: the start, and the answer without spacer weight */
     int st = gal_statics_solve(&p1, spec, value, &opts, &eq1);
     if (st) return st;

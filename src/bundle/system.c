@@ -16,6 +16,47 @@ int gal_bundle_elements(int elements, int spacers)
     return (per < 2 ? 2 : per) * g;
 }
 
+/* Spacer sp's node on a mesh of N elements (bp->positions given). */
+static int snap_node(const gal_bundle_params *bp, int sp, int N)
+{
+    return (int)floor(bp->positions[sp] * N + 0.5);
+}
+
+/* 1 when every spacer of bp->positions sits within GAL_BUNDLE_SNAP of a node of N elements, with at
+ * least 2 elements in every sub-span (the supports at nodes 0 and N). */
+static int snap_fits(const gal_bundle_params *bp, int N)
+{
+    int prev = 0;
+    for (int sp = 0; sp <= bp->spacers; sp++) {
+        int k = sp < bp->spacers ? snap_node(bp, sp, N) : N;
+        if (k - prev < 2) return 0;
+        if (sp < bp->spacers && !(fabs((double)k / N - bp->positions[sp]) <= GAL_BUNDLE_SNAP)) return 0;
+        prev = k;
+    }
+    return 1;
+}
+
+int gal_bundle_mesh(int elements, const gal_bundle_params *bp)
+{
+    if (!bp->positions || bp->spacers <= 0) return gal_bundle_elements(elements, bp->spacers);
+    int top = elements > 1000 ? elements : 1000;
+    for (int N = elements > 2 ? elements : 2; N <= top; N++)
+        if (snap_fits(bp, N)) return N;
+    return 0;
+}
+
+int gal_bundle_subspan_elements(int elements, const gal_bundle_params *bp)
+{
+    int N = gal_bundle_mesh(elements, bp), ns = bp->spacers, prev = 0, few = N;
+    if (N <= 0 || !bp->positions || ns <= 0) return N > 0 ? N / (ns + 1) : 0;
+    for (int sp = 0; sp <= ns; sp++) {
+        int k = sp < ns ? snap_node(bp, sp, N) : N;
+        if (k - prev < few) few = k - prev;
+        prev = k;
+    }
+    return few;
+}
+
 gal_bundle *gal_bundle_free(gal_bundle *b)
 {
     if (!b) return NULL;
@@ -253,12 +294,13 @@ static int place(gal_bundle *b, const gal_rod_params *p, const double *q1)
 
 gal_bundle *gal_bundle_alloc(const gal_rod_params *p, const gal_bundle_params *bp, const double *q1)
 {
-    int n = bp->subconductors, ns = bp->spacers, g = ns + 1;
+    int n = bp->subconductors, ns = bp->spacers, g = ns + 1, at = bp->positions && ns > 0;
     if (n < 2 || n > GAL_BUNDLE_MAX || ns < 0 || !(bp->radius > 0) || !p->torsion ||
-        p->elements % g || p->elements / g < 2) {
+        (at ? !snap_fits(bp, p->elements) : (p->elements % g || p->elements / g < 2))) {
         gal_error(GAL_EINPUT, "bundle: %d sub-conductors (allowed 2 to %d), radius %g m (> 0), torsion %s (on), "
-                  "%d elements for %d spacers (allowed: a multiple of spacers + 1, at least 2 between spacers)",
-                  n, GAL_BUNDLE_MAX, bp->radius, p->torsion ? "on" : "off", p->elements, ns);
+                  "%d elements for %d spacers (allowed: %s, at least 2 between spacers)", n, GAL_BUNDLE_MAX,
+                  bp->radius, p->torsion ? "on" : "off", p->elements, ns,
+                  at ? "each spacer within 1e-3 of the span of a node" : "a multiple of spacers + 1");
         return NULL;
     }
     gal_bundle *b = calloc(1, sizeof *b);
@@ -269,7 +311,10 @@ gal_bundle *gal_bundle_alloc(const gal_rod_params *p, const gal_bundle_params *b
     if (st) return gal_bundle_free(b);
     int nq = b->rod[0]->nq, per = p->elements / g;
     for (int i = 0; i < b->nn; i++) b->spat[i] = -1;
-    for (int sp = 0; sp < ns; sp++) b->spnode[sp] = (sp + 1) * per, b->spat[(sp + 1) * per] = sp;
+    for (int sp = 0; sp < ns; sp++) {
+        b->spnode[sp] = at ? snap_node(bp, sp, p->elements) : (sp + 1) * per;
+        b->spat[b->spnode[sp]] = sp;
+    }
     for (int r = 0; r < n; r++) memcpy(b->state + (size_t)r * nq, b->rod[r]->q0, (size_t)nq * sizeof(double));
     for (int sp = 0; sp < ns; sp++) {
         double *u = SP_U(b, b->state, sp), *R = SP_R(b, b->state, sp);

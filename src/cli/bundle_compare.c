@@ -55,6 +55,7 @@ static int report(const char *outdir, const gal_scene *sc, const gal_bundle_sim_
 
 int gal_cli_compare_bundle(const gal_scene *sc, const char *outdir)
 {
+    gal_cli_bundle_mesh_warning(sc, "compare");
     int st, rc = 0;
     gal_model *m = gal_model_alloc(sc, &st);
     gal_run_opts o;

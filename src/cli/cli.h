@@ -21,6 +21,9 @@ int gal_cli_sweep(int argc, char **argv);
 int gal_cli_modes_bundle(const struct gal_scene *sc, const char *outdir);
 /* `gallop simulate [--model reduced|full]` of an explicit bundle (src/cli/bundle.c) */
 int gal_cli_simulate_bundle(const struct gal_scene *sc, const char *outdir, int reduced);
+/* A warning on stderr when the explicit bundle's mesh is below its galloping runs' rule
+ * (GAL_BUNDLE_SUBSPAN_ELEMENTS in every sub-span); cmd names the command. */
+void gal_cli_bundle_mesh_warning(const struct gal_scene *sc, const char *cmd);
 /* `gallop compare` of an explicit bundle (src/cli/bundle_compare.c) */
 int gal_cli_compare_bundle(const struct gal_scene *sc, const char *outdir);
 /* compare's figures on stdout: the headline (each family at its probe) and, with more than one

@@ -257,10 +257,23 @@ static int bundle_checks(pstate *ps)
     if (!ps->given[K_BSEP])
         return scn_kfail(ps, K_BSUB, "a bundle of %d needs [bundle] separation (m, between adjacent "
                      "sub-conductors; allowed: 0 < separation <= 2)", n);
+    if (ps->given[K_BSPOS] && ps->given[K_BSPACERS])
+        return scn_kfail(ps, K_BSPOS, "given with [bundle] spacers; allowed: one of the two (spacers: a "
+                         "count, evenly spaced; spacer_positions: where each is)");
+    const double *sp = sc->bundle.spacer_positions, gap = GAL_BUNDLE_MIN_SUBSPAN;
+    for (int i = 0; i <= sc->bundle.nspacer_positions && ps->given[K_BSPOS]; i++) {
+        double a = i ? sp[i - 1] : 0, b = i < sc->bundle.nspacer_positions ? sp[i] : 1;
+        if (b - a < gap)
+            return scn_kfail(ps, K_BSPOS, "a sub-span of %g of the span between %g and %g (0 and 1: the "
+                             "supports); allowed: sub-spans of at least %g of the span", b - a, a, b, gap);
+    }
     sc->bundle.model_line = ps->given[K_BMODEL]; /* for the commands that refuse explicit */
     if (!sc->effect[GAL_FX_TORSION])
         return scn_kfail(ps, K_BSUB, "a bundle with [effects] torsion = off: its twist is what the "
                      "bundle changes; allowed: torsion = on, or subconductors = 1");
+    if (!(sc->bundle.separation > sc->conductor.diameter))
+        return scn_kfail(ps, K_BSEP, "not more than a sub-conductor's diameter (%g m): they would touch; "
+                         "allowed: %g < separation <= 2 m", sc->conductor.diameter, sc->conductor.diameter);
     sc->bundle.radius = sc->bundle.separation / (2 * sin(GAL_PI / n));
     return 1;
 }

@@ -133,6 +133,8 @@ const keydef scn_keys[K_COUNT] = {
     NUM("bundle", "separation", bundle.separation, 0, 1, 2, 0,
         "m, between adjacent sub-conductors on the bundle circle"),
     INT("bundle", "spacers", bundle.spacers, 0, 1000),
+    {"bundle", "spacer_positions", T_SPOS, 0, 0, 1, 1, 1, 1.0,
+     "fractions of the span, comma list, increasing (in place of spacers)", NULL},
     {"bundle", "orientation", T_NUM, OFF(bundle.orientation), -180, 180, 0, 0, DEG,
      "deg, of the first sub-conductor on the bundle circle from the horizontal", NULL},
     NUM("bundle", "spacer_mass", bundle.spacer_mass, 0, 0, 1000, 0, "kg, of one spacer"),

@@ -193,7 +193,14 @@ static void print_bundle(const gal_scene *sc, FILE *fp)
     fprintf(fp, "\n[bundle]\n");
     fprintf(fp, "subconductors = %d ; count\n", sc->bundle.subconductors);
     put_key(fp, sc, K_BSEP);
-    fprintf(fp, "spacers = %d ; count\n", sc->bundle.spacers);
+    if (sc->bundle.nspacer_positions) {
+        fprintf(fp, "spacer_positions = ");
+        for (int i = 0; i < sc->bundle.nspacer_positions; i++)
+            fprintf(fp, "%s%.15g", i ? ", " : "", sc->bundle.spacer_positions[i]);
+        fprintf(fp, " ; fractions of the span\n");
+    } else {
+        fprintf(fp, "spacers = %d ; count\n", sc->bundle.spacers);
+    }
     put_key(fp, sc, K_BORIENT);
     put_key(fp, sc, K_BSMASS);
     put_key(fp, sc, K_BSINERTIA);

@@ -319,6 +319,42 @@ static int apply_probes(kv *a)
     return 1;
 }
 
+/* [bundle] spacer_positions: fractions of the span, strictly increasing, in (0, 1); the count
+ * becomes [bundle] spacers (finish.c refuses both keys together). */
+static int apply_spacer_positions(kv *a)
+{
+    double *p = a->ps->sc->bundle.spacer_positions;
+    int np = 0;
+    const char *s = a->v;
+    char al[160];
+    snprintf(al, sizeof al, "a comma list of 1 to %d fractions of the span, each 0 < p < 1, increasing",
+             GAL_MAX_SPACER_POSITIONS);
+    for (;;) {
+        const char *c = strchr(s, ',');
+        size_t n = c ? (size_t)(c - s) : strlen(s);
+        char item[64];
+        while (n && (*s == ' ' || *s == '\t')) s++, n--;
+        while (n && (s[n - 1] == ' ' || s[n - 1] == '\t')) n--;
+        if (np == GAL_MAX_SPACER_POSITIONS) return bad(a, GAL_EINPUT, "too many positions; allowed: %s", al);
+        if (n == 0 || n >= sizeof item) return bad(a, GAL_EINPUT, "empty or bad item; allowed: %s", al);
+        memcpy(item, s, n);
+        item[n] = '\0';
+        if (!scn_parse_num(item, &p[np]))
+            return bad(a, GAL_EINPUT, "'%s' is not a number; allowed: %s", item, al);
+        if (!(p[np] > 0 && p[np] < 1))
+            return bad(a, GAL_EINPUT, "%s is out of range (0 and 1 are the supports); allowed: %s", item, al);
+        if (np > 0 && !(p[np] > p[np - 1]))
+            return bad(a, GAL_EINPUT, "position %d (%s) not after position %d (%g); allowed: %s", np + 1,
+                       item, np, p[np - 1], al);
+        np++;
+        if (!c) break;
+        s = c + 1;
+    }
+    a->ps->sc->bundle.nspacer_positions = np;
+    a->ps->sc->bundle.spacers = np;
+    return 1;
+}
+
 int scn_apply(pstate *ps, int k, const char *v, int line)
 {
     kv a = {.ps = ps, .k = k, .line = line, .v = v};
@@ -335,6 +371,7 @@ int scn_apply(pstate *ps, int k, const char *v, int line)
     case T_FX: ok = apply_fx(&a); break;
     case T_PROBES: ok = apply_probes(&a); break;
     case T_PAIRS: ok = apply_pairs(&a); break;
+    case T_SPOS: ok = apply_spacer_positions(&a); break;
     }
     if (!ok) return 0;
     ps->given[k] = line;

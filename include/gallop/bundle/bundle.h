@@ -35,6 +35,8 @@ typedef struct gal_bundle_params {
     double radius;           /* m, of the bundle circle */
     double orientation;      /* rad, of the first sub-conductor from the horizontal */
     int spacers;             /* count, evenly spaced along the sub-conductors (on nodes) */
+    const double *positions; /* spacers fractions of the span, increasing, or NULL: evenly spaced
+                              * (each on the node nearest it, within GAL_BUNDLE_SNAP of the span) */
     double spacer_mass;      /* kg, of one */
     double spacer_inertia;   /* kg m^2, of one about the bundle axis */
 } gal_bundle_params;
@@ -78,8 +80,19 @@ typedef struct gal_bundle {
  * with a message on bad input or memory. */
 gal_bundle *gal_bundle_alloc(const gal_rod_params *p, const gal_bundle_params *bp, const double *q1);
 gal_bundle *gal_bundle_free(gal_bundle *b);
-/* The elements of the refined mesh for `elements` asked and `spacers`. */
+/* The elements of the refined mesh for `elements` asked and `spacers` evenly spaced. */
 int gal_bundle_elements(int elements, int spacers);
+#define GAL_BUNDLE_SNAP 1e-3 /* largest distance of a spacer from its node, fraction of the span */
+/* The refined mesh for `elements` asked and bp's spacers: evenly spaced as gal_bundle_elements;
+ * at bp->positions the smallest count >= elements with every spacer within GAL_BUNDLE_SNAP of the
+ * span of a node and at least 2 elements in every sub-span (0 if none up to 1000 or elements). */
+int gal_bundle_mesh(int elements, const gal_bundle_params *bp);
+/* The galloping runs' mesh rule (README "Bundles", BENCHMARKS "coarse saturated twin"): elements in
+ * every sub-span between spacers (and supports); below it a twin turning ~100 deg p-p had its
+ * full model's rotation 17-21% low. */
+#define GAL_BUNDLE_SUBSPAN_ELEMENTS 6
+/* The fewest elements of any sub-span of the mesh gal_bundle_mesh(elements, bp) (0 if none). */
+int gal_bundle_subspan_elements(int elements, const gal_bundle_params *bp);
 
 /* Energy, gradient (b->grad) and, when K is nonzero, the tangent (b->K) and mass (b->M) at the
  * state s (b->state when NULL). */

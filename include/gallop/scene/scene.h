@@ -11,6 +11,8 @@ extern "C" {
 
 #define GAL_PATH_MAX 1024
 #define GAL_MAX_PROBES 16
+#define GAL_MAX_SPACER_POSITIONS 64 /* [bundle] spacer_positions */
+#define GAL_BUNDLE_MIN_SUBSPAN 0.005 /* shortest sub-span of spacer_positions, fraction of the span */
 #define GAL_MAX_NEIGHBOURS 8
 
 /* How the equilibrium is specified: exactly one of these ([span] horizontal_tension, sag,
@@ -129,7 +131,9 @@ typedef struct gal_scene {
         int subconductors;        /* 1 (no bundle), 2, 3, 4, 6 or 8 */
         double separation;        /* m, between adjacent sub-conductors on the bundle circle */
         double radius;            /* m, of the bundle circle (from separation; 0 for one) */
-        int spacers;              /* count, evenly spaced along the span */
+        int spacers;              /* count, evenly spaced along the span (or spacer_positions') */
+        int nspacer_positions;    /* 0: the spacers are evenly spaced */
+        double spacer_positions[GAL_MAX_SPACER_POSITIONS]; /* fractions of the span, increasing */
         double orientation;       /* rad (scene: deg), of the first sub-conductor from horizontal */
         double spacer_mass;       /* kg, of one spacer */
         double spacer_inertia;    /* kg m^2, of one spacer about the bundle axis */
