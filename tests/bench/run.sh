@@ -45,9 +45,11 @@ echo "$table"
   echo
   echo "The latest \`make bench\` (tests/bench/), $(date -u +%Y-%m-%d), on one core of: $machine."
   echo "Targets: the modes stage within 4x and a full-model step within 3x of their arithmetic floors; statics +"
-  echo "30 modes at 1000 elements 1000x faster than CalculiX (issue 16); reduced model at 100 and 1000 elements"
-  echo "within 20% of each other; speedup of reduced over full at 200 elements at least 100x. Times marked CPU"
-  echo "are the process's CPU time (the machine is shared); peak memory is each case's own process's."
+  echo "30 modes at 1000 elements 1000x faster than CalculiX (issue 16); the reduced model (issue 13) per simulated"
+  echo "second at least 30x the full model at 100-125 elements and 100x at 400, a whole 300-s run at least 10x"
+  echo "(medians over tests/rom/: make report-spanset), its cost per step flat in the mesh, its own set-up at 1000"
+  echo "elements at most 3x that at 100. Times marked CPU are the process's CPU time (the machine is shared);"
+  echo "peak memory is each case's own process's."
   echo
   echo "$table"
   # the sections written by hand (every "## " section after the table) are kept
