@@ -251,7 +251,6 @@ static int apply_fx(kv *a)
     return 1;
 }
 
-/* "0.25, 0.5": 1 to GAL_MAX_PROBES fractions of the span */
 /* output.neighbour_phases: "y1, z1, y2, z2, ...", m, an even count of numbers in the key's range */
 static int apply_pairs(kv *a)
 {
@@ -277,6 +276,30 @@ static int apply_pairs(kv *a)
     return 1;
 }
 
+/* The next item of the comma list at *s into item (blanks around it trimmed); *s moves past it, to
+ * NULL after the last. Returns 0 for an empty item or one longer than cap - 1. */
+static int list_next(const char **s, char *item, size_t cap)
+{
+    const char *b = *s, *c = strchr(b, ',');
+    size_t n = c ? (size_t)(c - b) : strlen(b);
+    *s = c ? c + 1 : NULL;
+    while (n && (*b == ' ' || *b == '\t')) b++, n--;
+    while (n && (b[n - 1] == ' ' || b[n - 1] == '\t')) n--;
+    if (n == 0 || n >= cap) return 0;
+    memcpy(item, b, n);
+    item[n] = '\0';
+    return 1;
+}
+
+/* item as a fraction of the span, 0 < x < 1 (note: said after "out of range"); 0 with the message. */
+static int fraction_item(kv *a, const char *item, double *x, const char *note, const char *al)
+{
+    if (!scn_parse_num(item, x)) return bad(a, GAL_EINPUT, "'%s' is not a number; allowed: %s", item, al);
+    if (!(*x > 0 && *x < 1)) return bad(a, GAL_EINPUT, "%s is out of range%s; allowed: %s", item, note, al);
+    return 1;
+}
+
+/* "0.25, 0.5": 1 to GAL_MAX_PROBES fractions of the span */
 static int apply_probes(kv *a)
 {
     double p[GAL_MAX_PROBES];
@@ -285,21 +308,11 @@ static int apply_probes(kv *a)
     char al[128];
     snprintf(al, sizeof al, "a comma list of 1 to %d fractions of the span, each 0 < p < 1",
              GAL_MAX_PROBES);
-    for (;;) {
-        const char *c = strchr(s, ',');
-        size_t n = c ? (size_t)(c - s) : strlen(s);
+    while (s) {
         char item[64];
-        while (n && (*s == ' ' || *s == '\t')) s++, n--;
-        while (n && (s[n - 1] == ' ' || s[n - 1] == '\t')) n--;
         if (np == GAL_MAX_PROBES) return bad(a, GAL_EINPUT, "too many probes; allowed: %s", al);
-        if (n == 0 || n >= sizeof item)
-            return bad(a, GAL_EINPUT, "empty or bad item; allowed: %s", al);
-        memcpy(item, s, n);
-        item[n] = '\0';
-        if (!scn_parse_num(item, &p[np]))
-            return bad(a, GAL_EINPUT, "'%s' is not a number; allowed: %s", item, al);
-        if (!(p[np] > 0 && p[np] < 1))
-            return bad(a, GAL_EINPUT, "%s is out of range; allowed: %s", item, al);
+        if (!list_next(&s, item, sizeof item)) return bad(a, GAL_EINPUT, "empty or bad item; allowed: %s", al);
+        if (!fraction_item(a, item, &p[np], "", al)) return 0;
         /* the trace names its columns p<%g of the probe>_...: those must not repeat */
         char me[32], other[32];
         snprintf(me, sizeof me, "%g", p[np]);
@@ -311,8 +324,6 @@ static int apply_probes(kv *a)
                            np + 1, item, j + 1, other);
         }
         np++;
-        if (!c) break;
-        s = c + 1;
     }
     memcpy(a->ps->sc->simulation.probes, p, sizeof p[0] * (size_t)np);
     a->ps->sc->simulation.nprobes = np;
@@ -329,26 +340,15 @@ static int apply_spacer_positions(kv *a)
     char al[160];
     snprintf(al, sizeof al, "a comma list of 1 to %d fractions of the span, each 0 < p < 1, increasing",
              GAL_MAX_SPACER_POSITIONS);
-    for (;;) {
-        const char *c = strchr(s, ',');
-        size_t n = c ? (size_t)(c - s) : strlen(s);
+    while (s) {
         char item[64];
-        while (n && (*s == ' ' || *s == '\t')) s++, n--;
-        while (n && (s[n - 1] == ' ' || s[n - 1] == '\t')) n--;
         if (np == GAL_MAX_SPACER_POSITIONS) return bad(a, GAL_EINPUT, "too many positions; allowed: %s", al);
-        if (n == 0 || n >= sizeof item) return bad(a, GAL_EINPUT, "empty or bad item; allowed: %s", al);
-        memcpy(item, s, n);
-        item[n] = '\0';
-        if (!scn_parse_num(item, &p[np]))
-            return bad(a, GAL_EINPUT, "'%s' is not a number; allowed: %s", item, al);
-        if (!(p[np] > 0 && p[np] < 1))
-            return bad(a, GAL_EINPUT, "%s is out of range (0 and 1 are the supports); allowed: %s", item, al);
+        if (!list_next(&s, item, sizeof item)) return bad(a, GAL_EINPUT, "empty or bad item; allowed: %s", al);
+        if (!fraction_item(a, item, &p[np], " (0 and 1 are the supports)", al)) return 0;
         if (np > 0 && !(p[np] > p[np - 1]))
             return bad(a, GAL_EINPUT, "position %d (%s) not after position %d (%g); allowed: %s", np + 1,
                        item, np, p[np - 1], al);
         np++;
-        if (!c) break;
-        s = c + 1;
     }
     a->ps->sc->bundle.nspacer_positions = np;
     a->ps->sc->bundle.spacers = np;
