@@ -43,32 +43,46 @@ static void print_err(const char *what, const figs *a, const figs *b)
            rel(a->T, b->T));
 }
 
-int main(int argc, char **argv)
+typedef struct {
+    const char *ov[32], *path;
+    int nov, subs[17], nsub, ref_sub;
+    double rms_from, full_h;
+} args;
+
+/* the command line into *a; 0 when it names a scene */
+static int parse(int argc, char **argv, args *a)
 {
-    const char *ov[32], *path = NULL;
-    int nov = 0, subs[16] = {1, 2, 3, 4}, nsub = 4, ref_sub = 16;
-    double rms_from = -1, full_h = 0;
+    memset(a, 0, sizeof *a);
+    a->subs[0] = 1, a->subs[1] = 2, a->subs[2] = 3, a->subs[3] = 4, a->nsub = 4, a->ref_sub = 16, a->rms_from = -1;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 32) ov[nov++] = argv[++i];
-        else if (!strcmp(argv[i], "--ref") && i + 1 < argc) ref_sub = atoi(argv[++i]);
-        else if (!strcmp(argv[i], "--rms") && i + 1 < argc) rms_from = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--full-h") && i + 1 < argc) full_h = atof(argv[++i]);
+        if (!strcmp(argv[i], "--set") && i + 1 < argc && a->nov < 32) a->ov[a->nov++] = argv[++i];
+        else if (!strcmp(argv[i], "--ref") && i + 1 < argc) a->ref_sub = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--rms") && i + 1 < argc) a->rms_from = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--full-h") && i + 1 < argc) a->full_h = atof(argv[++i]);
         else if (!strcmp(argv[i], "--subs") && i + 1 < argc) {
             char *p = argv[++i];
-            for (nsub = 0; *p && nsub < 16; nsub++) {
-                subs[nsub] = (int)strtol(p, &p, 10);
+            for (a->nsub = 0; *p && a->nsub < 16; a->nsub++) {
+                a->subs[a->nsub] = (int)strtol(p, &p, 10);
                 if (*p == ',') p++;
             }
-        } else path = argv[i];
+        } else a->path = argv[i];
     }
-    if (!path) {
-        fprintf(stderr, "usage: diag_steps SCENE [--subs 1,2,3,4] [--ref 16] [--rms FROM] [--set key=value]...\n");
-        return 2;
-    }
+    if (a->path) return 0;
+    fprintf(stderr, "usage: diag_steps SCENE [--subs 1,2,3,4] [--ref 16] [--rms FROM] [--full-h H] [--set key=value]...\n");
+    return 2;
+}
+
+int main(int argc, char **argv)
+{
+    args A;
+    if (parse(argc, argv, &A)) return 2;
+    const char *path = A.path;
+    int nsub = A.nsub, *subs = A.subs, ref_sub = A.ref_sub;
+    double rms_from = A.rms_from, full_h = A.full_h;
     if (openblas_set_num_threads) openblas_set_num_threads(1);
     gal_scene sc;
     gal_sim_setup s;
-    if (gal_scene_load(&sc, path, ov, nov, NULL) || gal_sim_setup_init(&s, &sc, 1)) {
+    if (gal_scene_load(&sc, path, A.ov, A.nov, NULL) || gal_sim_setup_init(&s, &sc, 1)) {
         fprintf(stderr, "diag_steps: %s\n", gal_error_message());
         return 1;
     }
