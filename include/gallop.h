@@ -41,6 +41,7 @@
 #include "gallop/reduced/rom.h"
 #include "gallop/reduced/ecsw.h"
 #include "gallop/reduced/rom_adapt.h"
+#include "gallop/reduced/rom_turb.h"
 #include "gallop/reduced/rom_sim.h"
 /* run: galloping runs */
 #include "gallop/run/forward.h"

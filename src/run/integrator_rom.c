@@ -12,6 +12,7 @@
 #include "gallop/run/integrator.h"
 #include "gallop/base/core.h"
 #include "gallop/reduced/rom_adapt.h"
+#include "gallop/reduced/rom_turb.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -35,6 +36,7 @@ typedef struct {
     gal_rom_check worst;
     int setup_reused;       /* the wind-independent set-up was the data's (an earlier run's) */
     double setup_time_s;    /* s: that set-up's wall time when this run made it */
+    double *turb;           /* the turbulent wind's load shapes (rom_turb.h), or NULL */
 } rom_state;
 
 static void rom_free(void *state)
@@ -44,6 +46,7 @@ static void rom_free(void *state)
     gal_rom_free(s->rom);
     gal_rom_adapt_clear(&s->adapt);
     free(s->du);
+    free(s->turb);
     free(s);
 }
 
@@ -91,6 +94,12 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
         rom_free(s);
         return st;
     }
+    if (d->loads.u && ro.setup && /* a turbulent field: its load shapes up front */
+        (st = gal_rom_turb_basis(ro.setup, &F, m->sc.simulation.duration, &s->turb, &ro.nextra))) {
+        rom_free(s);
+        return st;
+    }
+    ro.extra = s->turb;
     if ((st = gal_rom_adapt_init(&s->adapt, &s->rom, d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F)) ||
         !(s->du = malloc((size_t)d->eq.rod->ndof * sizeof(double)))) {
         if (!st) st = gal_error(GAL_ENOMEM, "simulate: out of memory");
