@@ -70,47 +70,64 @@ static int snapshots(const gal_rom *m, const gal_force *F, const gal_rom_turb_op
     return st;
 }
 
-/* Append to E (n x *ne) the POD shapes of the part `part` of D (the other part's entries zeroed):
- * the eigenvectors of the Gram matrix G = Dp^T Mdiag Dp (ns x ns) by decreasing eigenvalue, until
- * what is left is at most o->energy of whole, at most o->max_vectors; each shape D a / |D a|_M.
- * G, ev: scratch (ns x ns, ns + work). */
+/* The symmetric eigenproblem of the k x k matrix G in place (its eigenvectors, ascending
+ * eigenvalues into ev). */
+static int eigen(double *G, int k, double *ev)
+{
+    int info = 0, lwork = -1;
+    double wq = 0, *work;
+    dsyev_("V", "U", &k, G, &k, ev, &wq, &lwork, &info);
+    lwork = (int)wq;
+    if (info || !(work = malloc((size_t)(lwork > 1 ? lwork : 1) * sizeof(double))))
+        return info ? gal_error(GAL_EFAIL, "reduced model: the wind's load shapes: dsyev failed (%d)", info)
+                    : gal_error(GAL_ENOMEM, "reduced model: out of memory for the wind's load shapes");
+    dsyev_("V", "U", &k, G, &k, ev, work, &lwork, &info);
+    free(work);
+    return info ? gal_error(GAL_EFAIL, "reduced model: the wind's load shapes: dsyev failed (%d)", info) : GAL_OK;
+}
+
+/* Append to E (n x *ne) the POD shapes of the part `part` of D: W = Mdiag^1/2 D over the part's np
+ * dofs (np x ns); the eigenvectors of the smaller of W W^T (np x np: the shapes themselves) and
+ * W^T W (ns x ns: the method of snapshots, shape D a) by decreasing eigenvalue, until what is left is
+ * at most o->energy of whole, at most o->max_vectors; each M-normalized (so that the set-up's cost
+ * does not grow as ns^3 with the run's length, nor as np^3 with the mesh). G: scratch of
+ * min(np, ns)^2, W: of np ns. */
 static int pod_part(const gal_rom *m, const double *D, int ns, const unsigned char *tw, int part, double whole,
                     const gal_rom_turb_opts *o, double *E, int *ne, double *G, double *W, double *out, double *left)
 {
     const gal_rod *rod = m->rod;
-    int n = m->ndof, info = 0, lwork = -1;
-    for (int i = 0; i < n; i++) {
-        double s = tw[i] == part ? sqrt(rod->mdiag[i]) : 0;
-        for (int k = 0; k < ns; k++) W[(size_t)k * n + i] = s * D[(size_t)k * n + i];
-    }
-    double one = 1, zero = 0, wq, *ev = malloc((size_t)ns * sizeof(double)), *work = NULL;
-    if (!ev) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the wind's load shapes");
-    dgemm_("T", "N", &ns, &ns, &n, &one, W, &n, W, &n, &zero, G, &ns);
-    double tot = 0;
-    for (int k = 0; k < ns; k++) tot += G[(size_t)k * ns + k];
+    int n = m->ndof, np = 0, st;
+    int *idx = malloc((size_t)n * sizeof(int));
+    double *ev = malloc((size_t)(ns > n ? ns : n) * sizeof(double)), one = 1, zero = 0, tot = 0;
+    if (!idx || !ev) { free(idx); free(ev); return gal_error(GAL_ENOMEM, "reduced model: out of memory for the wind's load shapes"); }
+    for (int i = 0; i < n; i++)
+        if (tw[i] == part) idx[np++] = i;
+    for (int k = 0; k < ns; k++)
+        for (int a = 0; a < np; a++) W[(size_t)k * np + a] = sqrt(rod->mdiag[idx[a]]) * D[(size_t)k * n + idx[a]];
+    int byshape = np <= ns, k = byshape ? np : ns;
+    if (byshape) dgemm_("N", "T", &np, &np, &ns, &one, W, &np, W, &np, &zero, G, &np);
+    else dgemm_("T", "N", &ns, &ns, &np, &one, W, &np, W, &np, &zero, G, &ns);
+    for (int c = 0; c < k; c++) tot += G[(size_t)c * k + c];
     *out = whole > 0 ? tot / whole : 0;
-    dsyev_("V", "U", &ns, G, &ns, ev, &wq, &lwork, &info);
-    lwork = (int)wq;
-    if (!info && (work = malloc((size_t)(lwork > 1 ? lwork : 1) * sizeof(double))))
-        dsyev_("V", "U", &ns, G, &ns, ev, work, &lwork, &info);
-    int st = !work ? gal_error(GAL_ENOMEM, "reduced model: out of memory for the wind's load shapes")
-           : info ? gal_error(GAL_EFAIL, "reduced model: the wind's load shapes: dsyev failed (%d)", info) : GAL_OK;
+    st = k > 0 ? eigen(G, k, ev) : GAL_OK;
     double rest = tot;
-    for (int c = ns - 1, kept = 0; !st && c >= 0 && kept < o->max_vectors && rest > o->energy * whole; c--, kept++) {
+    for (int c = k - 1, kept = 0; !st && c >= 0 && kept < o->max_vectors && rest > o->energy * whole; c--, kept++) {
         if (!(ev[c] > 0)) break;
         double *e = E + (size_t)*ne * n, s = 0;
-        for (int i = 0; i < n; i++) {
+        memset(e, 0, (size_t)n * sizeof(double));
+        for (int a = 0; a < np; a++) {
             double v = 0;
-            if (tw[i] == part)
-                for (int k = 0; k < ns; k++) v += D[(size_t)k * n + i] * G[(size_t)c * ns + k];
-            e[i] = v, s += rod->mdiag[i] * v * v;
+            if (byshape) v = G[(size_t)c * k + a] / sqrt(rod->mdiag[idx[a]]);
+            else
+                for (int j = 0; j < ns; j++) v += D[(size_t)j * n + idx[a]] * G[(size_t)c * k + j];
+            e[idx[a]] = v, s += rod->mdiag[idx[a]] * v * v;
         }
         if (!(s > 0)) break;
-        for (int i = 0; i < n; i++) e[i] /= sqrt(s);
+        for (int a = 0; a < np; a++) e[idx[a]] /= sqrt(s);
         (*ne)++, rest -= ev[c];
     }
     *left = whole > 0 ? fmax(rest, 0) / whole : 0;
-    free(ev); free(work);
+    free(idx); free(ev);
     return st;
 }
 
@@ -130,7 +147,8 @@ int gal_rom_turb_vectors(const gal_rom *m, const gal_force *force, const gal_rom
     size_t big = (size_t)n * ns;
     unsigned char *tw = malloc((size_t)n);
     double *D = malloc(big * sizeof(double)), *W = malloc(big * sizeof(double));
-    double *G = malloc(((size_t)ns * ns + (size_t)r * ns) * sizeof(double));
+    size_t g = (size_t)(n < ns ? n : ns) * (n < ns ? n : ns) + (size_t)r * (ns > 12 ? ns : 12); /* pod_part, project_out */
+    double *G = malloc(g * sizeof(double));
     double *E = malloc((size_t)2 * o->max_vectors * n * sizeof(double)), whole[2] = {0, 0};
     if (!tw || !D || !W || !G || !E) st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the wind's load shapes");
     else {
