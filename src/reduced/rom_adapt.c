@@ -45,6 +45,21 @@ int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const 
     return *m ? GAL_OK : GAL_EFAIL;
 }
 
+/* The cubic check (rom_adapt.h) into chk->cubic, and into chk->rel where larger (vertical and
+ * horizontal), from GAL_ROM_CUBIC_SETTLE_S on. */
+static int cubic_check(gal_rom *m, gal_rom_check *chk)
+{
+    if (m->t < GAL_ROM_CUBIC_SETTLE_S) return GAL_OK;
+    double ce[GAL_FAMILY_COUNT];
+    int st = gal_rom_cubic(m, m->x, ce);
+    if (st) return st;
+    for (int f = GAL_FAMILY_VERTICAL; f <= GAL_FAMILY_HORIZONTAL; f++) {
+        chk->cubic[f] = chk->scale[f] > 0 ? ce[f] / chk->scale[f] : 0;
+        chk->rel[f] = fmax(chk->rel[f], chk->cubic[f] / GAL_ROM_CUBIC_SHARE);
+    }
+    return GAL_OK;
+}
+
 int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, double *du)
 {
     int st = gal_rom_residual_dir(m, chk, du);
@@ -53,6 +68,7 @@ int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, dou
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) a->amp[f] = fmax(a->amp[f], chk->disp[f]);
     chk->scale[t] = GAL_ROM_TWIST_WEIGHT * fmax(a->amp[t], a->twist_floor);
     chk->rel[t] = chk->scale[t] > 0 ? chk->err[t] / chk->scale[t] : 0;
+    if ((st = cubic_check(m, chk))) return st;
     chk->max = 0;
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) chk->max = fmax(chk->max, chk->rel[f]);
     return GAL_OK;
@@ -256,6 +272,12 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
     if (a->nevents >= GAL_ROM_EVENTS_MAX) {
         gal_error(GAL_EFAIL, "the basis grew %d times (%d vectors) and the %s residual is still %.3g",
                   a->nevents, old->r, gal_family_names[f], chk->max);
+        return GAL_ROM_ELIMIT;
+    }
+    if (f <= GAL_FAMILY_HORIZONTAL && chk->rel[f] == chk->cubic[f] / GAL_ROM_CUBIC_SHARE) {
+        gal_error(GAL_EFAIL, "the basis (%d vectors) lacks the modes' third-order coupling: the cubic part of the "
+                  "%s motion outside it is %.3g of the motion (the basis cannot grow by it)", old->r,
+                  gal_family_names[f], chk->cubic[f]);
         return GAL_ROM_ELIMIT;
     }
     int corr = (a->policy & GAL_ROM_ADD_CORRECTION) && du ? 1 : 0;

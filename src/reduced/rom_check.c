@@ -157,3 +157,56 @@ done:
     free(w);
     return st;
 }
+
+/* y += s D2K[w, w] w for w = Phi eta (D2K by central differences of the tangent over a translation
+ * of GAL_ROM_CUBIC_STEP along w / wmax, wmax its largest translation); w: n of scratch, m->fq and
+ * m->K the scratch of the configuration and of the tangents. */
+static int cubic_add(gal_rom *m, const double *eta, double s, double *w, double *y, double *ky)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, st = GAL_OK;
+    double wmax = 0;
+    memset(w, 0, (size_t)n * sizeof(double));
+    for (int k = 0; k < m->nmodes; k++)
+        for (int d = 0; d < n; d++) w[d] += eta[k] * m->V[(size_t)k * n + d];
+    for (int d = 0; d < n; d++)
+        if (rod->free_q[d] < 3 * rod->nn) wmax = fmax(wmax, fabs(w[d]));
+    if (!(wmax > 0)) return GAL_OK;
+    for (int d = 0; d < n; d++) w[d] /= wmax;
+    double e = GAL_ROM_CUBIC_STEP, c = s * wmax * wmax * wmax / (e * e);
+    gal_csc_symv(m->K0, w, ky);
+    for (int d = 0; d < n; d++) y[d] -= 2 * c * ky[d];
+    for (int sg = -1; sg <= 1 && !st; sg += 2) {
+        memcpy(m->fq, m->q_eq, (size_t)m->nq * sizeof(double));
+        for (int d = 0; d < n; d++) m->fq[rod->free_q[d]] += sg * e * w[d];
+        if ((st = gal_rod_eval(rod, m->fq, NULL, NULL, m->K))) break;
+        gal_csc_symv(m->K, w, ky);
+        for (int d = 0; d < n; d++) y[d] += c * ky[d];
+    }
+    return st;
+}
+
+int gal_rom_cubic(gal_rom *m, const double *eta, double err[GAL_FAMILY_COUNT])
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, st = GAL_OK;
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) err[f] = 0;
+    if (m->qm || m->nmodes < 1) return GAL_OK; /* the manifold carries its own higher terms */
+    double *w = calloc((size_t)3 * n + m->r, sizeof(double)), *c = w + n, *y = c + n, *p = y + n;
+    if (!w) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the cubic check");
+    if ((st = cubic_add(m, eta, -1.0 / 6, w, c, y)) || (st = gal_chol_solve(m->chol0, c, c))) goto done;
+    gal_rod_mass_mult(rod, c, y); /* c -= V V^T M c */
+    for (int k = 0; k < m->r; k++) {
+        double a = 0;
+        for (int d = 0; d < n; d++) a += m->V[(size_t)k * n + d] * y[d];
+        p[k] = a;
+    }
+    for (int k = 0; k < m->r; k++)
+        for (int d = 0; d < n; d++) c[d] -= p[k] * m->V[(size_t)k * n + d];
+    double acc[GAL_FAMILY_COUNT] = {0};
+    accumulate(m, c, c, rod->mdiag, acc);
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) err[f] = sqrt(acc[f]);
+done:
+    free(w);
+    return st;
+}

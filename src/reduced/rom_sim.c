@@ -42,6 +42,7 @@ static int check(gal_rom_adapt *a, gal_rom **m, double tol, gal_rom_sim_info *in
     }
     info->residual_max = fmax(info->residual_max, chk.max);
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) info->residual_family[f] = fmax(info->residual_family[f], chk.rel[f]);
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) info->cubic_family[f] = fmax(info->cubic_family[f], chk.cubic[f]);
     return GAL_OK;
 }
 

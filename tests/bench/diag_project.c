@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <fnmatch.h>
+#include <time.h>
 
 #include <gsl/gsl_eigen.h>
 
@@ -158,12 +159,78 @@ static void run_reduced(gal_sim_setup *s, const gal_sim_result *rf, const double
     gal_compare_runs(rf, &rr, -1, &c);
     double Tf = c.full.tension_max_steady, Tr = c.reduced.tension_max_steady;
     printf("RUN %s +%d basis %d->%d (%d growths) f %.2f%% v %.2f%% h %.2f%% twist %.2f%% (%.1f/%.1f deg) "
-           "T %.2f%% res %.3f valid %d wall %.2f s (%.1f us/step, %ld steps)\n",
+           "T %.2f%% res %.3f valid %d wall %.2f s (%.1f us/step, %ld steps, %.2f Newton, %.3f tangents a step)\n",
            label, nx, info.basis_start, info.basis, info.nevents, 100 * c.frequency_error, 100 * c.err_vertical,
            100 * c.err_horizontal, 100 * c.err_twist, c.reduced.peak_to_peak[3], c.full.peak_to_peak[3],
            100 * (Tr - Tf) / Tf, info.residual_max, info.valid, rr.wall_time_s, 1e6 * rr.wall_time_s / fmax(rr.steps, 1),
-           rr.steps);
+           rr.steps, (double)rr.newton_iterations / fmax(rr.steps, 1), (double)rr.factorizations / fmax(rr.steps, 1));
+    printf("CUBIC %s: the cubic indicator's largest, per family: v %.4f h %.4f t %.4f a %.4f; residual v %.3f h %.3f "
+           "t %.3f a %.3f\n", label, info.cubic_family[0], info.cubic_family[1], info.cubic_family[2],
+           info.cubic_family[3], info.residual_family[0], info.residual_family[1], info.residual_family[2],
+           info.residual_family[3]);
     gal_sim_result_clear(&rr);
+}
+
+/* --cost: where a step's time goes with nx extra vectors: the model as a run builds it (sampled,
+ * the scene's step and damping), started at the full run's state at --cost-from, stepped for
+ * --cost-span s without checks; the sample sizes, Newton iterations, tangents, halvings and element
+ * evaluations per step, CPU per step; then the same with every element (hyper off) and with the
+ * basis's stiffest direction's frequency (sqrt of the largest eigenvalue of V^T K0 V) */
+static double cost_from = -1, cost_span = 20;
+static void cost_probe(gal_sim_setup *s, const double *X, int nx, const char *label)
+{
+    gal_data *d = s->data;
+    const gal_modes *md = &d->md;
+    int sel[64], nsel = 0;
+    double fhi = 0;
+    for (int k = 0; k < md->n && nsel < 64; k++)
+        if (md->mode[k].selected) sel[nsel++] = k, fhi = fmax(fhi, md->mode[k].frequency_hz);
+    double dt_out = s->sc->simulation.output_interval;
+    if (!(dt_out > 0)) dt_out = fmin(0.05, 1.0 / (10 * fhi));
+    double h = s->sc->simulation.time_step;
+    if (!(h > 0)) h = fmin(dt_out, 1.0 / (40 * fhi));
+    int sub = (int)ceil(dt_out / h - 1e-9);
+    gal_force F = {0};
+    if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads;
+    for (int hyper = 1; hyper >= 0; hyper--) {
+        gal_rom_opts ro;
+        gal_rom_default_opts(&ro);
+        ro.h = dt_out / sub, ro.rho_inf = s->sc->simulation.rho_inf, ro.damping = d->damping, ro.hyper = hyper;
+        ro.extra = nx ? X : NULL, ro.nextra = nx;
+        clock_t c0 = clock();
+        gal_rom *m = gal_rom_alloc(d->eq.rod, d->eq.q, md, sel, nsel, &ro, &F);
+        if (!m) { printf("COST %s: %s\n", label, gal_error_message()); return; }
+        double tb = (double)(clock() - c0) / CLOCKS_PER_SEC;
+        /* the stiffest direction of the basis: V^T K0 V's largest eigenvalue */
+        gsl_matrix *A = gsl_matrix_alloc(m->r, m->r);
+        for (int i = 0; i < m->r * m->r; i++) A->data[i] = m->K0r[i];
+        gsl_vector *ev = gsl_vector_alloc(m->r);
+        gsl_eigen_symm_workspace *ew = gsl_eigen_symm_alloc(m->r);
+        gsl_eigen_symm(A, ev, ew);
+        double lmax = gsl_vector_max(ev);
+        gsl_eigen_symm_free(ew), gsl_vector_free(ev), gsl_matrix_free(A);
+        gal_rom_start(m, 0.0, d->q_start, NULL);
+        double t1 = cost_from >= 0 ? cost_from : 0;
+        int st = 0;
+        while (!st && m->t < t1 - 1e-9) st = gal_rom_step(m);
+        long s0 = m->steps, n0 = m->newton_iterations, k0 = m->tangents, f0 = m->force_evaluations, hv0 = m->halvings;
+        long e0 = m->element_evaluations, l0 = m->load_element_evaluations, c0e = m->check_element_evaluations;
+        c0 = clock();
+        while (!st && m->t < t1 + cost_span - 1e-9) st = gal_rom_step(m);
+        double cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
+        long ns = m->steps - s0;
+        gal_rom_hyper_info hi;
+        gal_rom_hyper_get_info(m, &hi);
+        printf("COST %s hyper %d: basis %d, sample %d energy / %d load elements (fit %.1e), stiffest %.1f Hz, h %.4f s "
+               "(w h %.1f); set-up %.2f s CPU; %ld steps from %.0f s%s: %.2f Newton, %.2f tangents, %.2f force evals, "
+               "%ld halvings, %.0f energy + %.0f load elements a step, %d re-samplings, %.0f check elements a step; %.1f us CPU a step\n",
+               label, hyper, m->r, hi.elements, hi.load_elements, hi.fit_error, sqrt(fmax(lmax, 0)) / (2 * GAL_PI), ro.h,
+               sqrt(fmax(lmax, 0)) * ro.h, tb, ns, t1, st ? " (FAILED)" : "", (double)(m->newton_iterations - n0) / ns,
+               (double)(m->tangents - k0) / ns, (double)(m->force_evaluations - f0) / ns, m->halvings - hv0,
+               (double)(m->element_evaluations - e0) / ns, (double)(m->load_element_evaluations - l0) / ns, hi.refits,
+               (double)(m->check_element_evaluations - c0e) / ns, 1e6 * cpu / fmax(ns, 1));
+        gal_rom_free(m);
+    }
 }
 
 /* everything main computes, for its parts */
@@ -173,11 +240,11 @@ typedef struct {
     gal_rom *m;
     nodeinfo *ni;
     double *E, *P, share[64];      /* the projection error (n x ns) and its POD */
-    int npod, detail, massw;
+    int npod, detail, massw, cost;
     double tol;
     cands c;
     int g0[4], g1[4];              /* the candidate groups: modes, aero, third, pod */
-    double *Pt, sht[16], *Ptan, shtan[16], *Prt, shrt[32]; /* tpod, ttan, rtan */
+    double *Pt, sht[16], *Ptan, shtan[16], *Prt, shrt[32], *Pst; /* tpod, ttan, rtan, stan */
 } diag;
 
 static int setup(diag *g, const gal_scene *sc)
@@ -316,6 +383,29 @@ static void candidates(diag *g)
                 }
         orth(m->rod, m->V, m->r, Wt + (size_t)t * n);
     }
+    { /* the cubic part outside V against the motion, per family (an a-priori error indicator) */
+        double a[4 * NBIN], fc[4], fu[4], cmax[4] = {0}, sc[4] = {0}, su[4] = {0};
+        for (int t = 0; t < nt; t++) {
+            famspan(m->rod, g->ni, Wt + (size_t)t * n, a), famsum(a, fc);
+            famspan(m->rod, g->ni, rec.U + (size_t)t * n, a), famsum(a, fu);
+            double tot = fu[0] + fu[1] + fu[2] + fu[3];
+            for (int f = 0; f < 4; f++)
+                sc[f] += fc[f], su[f] += fu[f], cmax[f] = fmax(cmax[f], sqrt(fc[f] / fmax(fu[f], 4e-4 * tot)));
+        }
+        int tb = 0;
+        double cb = -1;
+        for (int t = 0; t < nt; t++) {
+            double c2 = mdot(m->rod, Wt + (size_t)t * n, Wt + (size_t)t * n);
+            if (c2 > cb) cb = c2, tb = t;
+        }
+        g->Pst = malloc((size_t)n * 6 * sizeof(double));
+        double shs[6];
+        cubic_tangent_pod(m, th, eta + (size_t)tb * nm, 1, 0, nm < 6 ? nm : 6, g->Pst, shs);
+        printf("INDICATOR largest cubic content at %.1f s\n", rec.tU[tb]);
+        printf("INDICATOR cubic part outside V / motion per family (rms; max):");
+        for (int f = 0; f < 4; f++) printf(" %s %.4f (%.4f)", gal_family_names[f], sqrt(sc[f] / su[f]), cmax[f]);
+        printf("\n");
+    }
     g->Pt = malloc((size_t)n * 16 * sizeof(double)), g->Ptan = malloc((size_t)n * 16 * sizeof(double));
     g->Prt = malloc((size_t)n * 32 * sizeof(double));
     pod(m->rod, Wt, nt, 16, g->Pt, g->sht);
@@ -386,6 +476,7 @@ static void run_group(diag *g, const char *spec, double *X)
         const double *src = g->Pt;
         if (!strncmp(spec, "pod", 3)) src = g->P, cap = g->npod;
         else if (!strncmp(spec, "ttan", 4)) src = g->Ptan;
+        else if (!strncmp(spec, "stan", 4)) src = g->Pst, cap = 6;
         else if (!strncmp(spec, "rtan", 4)) {
             src = g->Prt, cap = 32;
             if (np == 0)
@@ -399,7 +490,8 @@ static void run_group(diag *g, const char *spec, double *X)
         if (strstr(spec, "+aero"))
             memcpy(X + (size_t)n * nx, C + (size_t)g0[1] * n, (size_t)n * (g1[1] - g0[1]) * sizeof(double)), nx += g1[1] - g0[1];
     }
-    run_reduced(&g->s, &g->rf, X, nx, g->tol, spec);
+    if (g->cost) cost_probe(&g->s, X, nx, spec);
+    else run_reduced(&g->s, &g->rf, X, nx, g->tol, spec);
 }
 
 int main(int argc, char **argv)
@@ -416,6 +508,9 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--run") && i + 1 < argc && nrun < 16) runs[nrun++] = argv[++i];
         else if (!strcmp(argv[i], "--tol") && i + 1 < argc) g.tol = atof(argv[++i]);
         else if (!strcmp(argv[i], "--detail")) g.detail = 1;
+        else if (!strcmp(argv[i], "--cost")) g.cost = 1;
+        else if (!strcmp(argv[i], "--cost-from") && i + 1 < argc) cost_from = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--cost-span") && i + 1 < argc) cost_span = atof(argv[++i]);
         else if (!strcmp(argv[i], "--mass-weighted")) g.massw = 1;
     gal_scene sc;
     if (argc < 2 || gal_scene_load(&sc, argv[1], ov, nov, NULL) || gal_sim_setup_init(&g.s, &sc, 1) || setup(&g, &sc)) {

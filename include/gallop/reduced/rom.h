@@ -114,6 +114,8 @@ typedef struct gal_rom_check {
     double scale[GAL_FAMILY_COUNT]; /* ... and the scale rel is relative to */
     double power[3][GAL_FAMILY_COUNT]; /* W: the power along the full velocity, per family, of the
                                         * residual R, the load F and the damping force C v */
+    double cubic[GAL_FAMILY_COUNT]; /* the cubic indicator (gal_rom_cubic) over scale, per family
+                                     * (filled by gal_rom_adapt_residual; 0 otherwise) */
 } gal_rom_check;
 
 typedef struct gal_rom {
@@ -247,6 +249,16 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
 /* The same, with the correcting displacement du = K0^-1 R over the free dofs into du (ndof; may
  * be NULL). */
 int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du);
+/* The basis's next term, an a-priori error indicator (the check of rom_adapt.h): the third-order
+ * part of the static response along the modes' displacement w = Phi eta (nmodes entries),
+ * c = -(1/6) K0^-1 D2K[w, w] w (D2K: the second directional derivative of the tangent, by central
+ * differences over a translation of GAL_ROM_CUBIC_STEP m along w; the third-order modal
+ * derivatives -K0^-1 d2K/d eta_j d eta_k phi_i summed over the state, Idelsohn & Cardona's
+ * construction one order up), less its part in the basis; per family (gal_rom_check's directions)
+ * the mass norm of what is left into err. Two tangents of the whole rod and one solve. Zeros on
+ * the manifold. */
+#define GAL_ROM_CUBIC_STEP 0.02
+int gal_rom_cubic(gal_rom *m, const double *eta, double err[GAL_FAMILY_COUNT]);
 /* The reduced internal force V^T grad U(q_eq + V x) (r entries). */
 int gal_rom_internal_force(gal_rom *m, const double *x, double *f);
 /* Kr = V^T K V (r x r) for a tangent K on the rod's pattern; work: ndof. */

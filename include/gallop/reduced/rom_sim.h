@@ -34,6 +34,7 @@ typedef struct gal_rom_sim_info {
     int nevents;              /* growths of the basis */
     gal_rom_event ev[GAL_ROM_EVENTS_MAX];
     double residual_family[GAL_FAMILY_COUNT]; /* the largest per family */
+    double cubic_family[GAL_FAMILY_COUNT]; /* the largest cubic indicator per family (gal_rom_check.cubic) */
     int checks;
     double build_time_s;      /* the model's own set-up (after statics and modes) */
 } gal_rom_sim_info;
