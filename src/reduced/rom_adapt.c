@@ -46,10 +46,10 @@ int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const 
 }
 
 /* The cubic check (rom_adapt.h) into chk->cubic, and into chk->rel where larger (vertical and
- * horizontal), from GAL_ROM_CUBIC_SETTLE_S on. */
-static int cubic_check(gal_rom *m, gal_rom_check *chk)
+ * horizontal), from GAL_ROM_CUBIC_SETTLE_S on, every GAL_ROM_CUBIC_EVERY-th check. */
+static int cubic_check(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk)
 {
-    if (m->t < GAL_ROM_CUBIC_SETTLE_S) return GAL_OK;
+    if (m->t < GAL_ROM_CUBIC_SETTLE_S || a->cubic_checks++ % GAL_ROM_CUBIC_EVERY) return GAL_OK;
     double ce[GAL_FAMILY_COUNT];
     int st = gal_rom_cubic(m, m->x, ce);
     if (st) return st;
@@ -68,7 +68,7 @@ int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, dou
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) a->amp[f] = fmax(a->amp[f], chk->disp[f]);
     chk->scale[t] = GAL_ROM_TWIST_WEIGHT * fmax(a->amp[t], a->twist_floor);
     chk->rel[t] = chk->scale[t] > 0 ? chk->err[t] / chk->scale[t] : 0;
-    if ((st = cubic_check(m, chk))) return st;
+    if ((st = cubic_check(a, m, chk))) return st;
     chk->max = 0;
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) chk->max = fmax(chk->max, chk->rel[f]);
     return GAL_OK;

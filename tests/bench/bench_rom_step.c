@@ -5,7 +5,8 @@
  * the parts timed alone (medians of 7 batches): one pass of the sampled internal force, one of the
  * sampled loads, one fresh tangent, one sample check (gal_rom_hyper_check: the exact projected
  * forces over the whole rod) and one self-check (gal_rom_residual_dir: the full residual and a K0
- * solve), each check once every gal_rom_check_interval (1 s on coarse meshes). The rest of the
+ * solve) with its cubic part (gal_rom_cubic: two tangents of the whole rod and a K0 solve), each
+ * check once every gal_rom_check_interval (1 s on coarse meshes). The rest of the
  * step (Newmark updates, residual, LU solves) is the step's CPU less the parts. Each size in its
  * own process; the BLAS on one thread. Usage: bench_rom_step [--seconds S] (default 60). Prints
  * ROW| and BENCH| lines (make bench). */
@@ -20,7 +21,7 @@
 void openblas_set_num_threads(int n) __attribute__((weak));
 
 enum { O_STEP, O_PASSES, O_TANGENTS, O_EL, O_LEL, O_CHK_EL, O_INT, O_EXT, O_TAN, O_HCHK, O_SELF, O_STEPS_S, O_IVL,
-       O_LOADS, O_COUNT };
+       O_LOADS, O_CUBIC, O_COUNT };
 
 /* us per call of part k (0 internal, 1 loads, 2 tangent, 3 sample check, 4 self-check): median of 7
  * batches of n calls */
@@ -37,7 +38,8 @@ static int part_us(gal_rom *m, int k, int n, double *us)
             else if (k == 1) st = gal_rom_hyper_external(m, m->t, m->x, m->v, f);
             else if (k == 2) st = gal_rom_hyper_internal(m, m->x, f, Kr);
             else if (k == 3) st = gal_rom_hyper_check(m, NULL);
-            else st = gal_rom_residual_dir(m, &chk, du);
+            else if (k == 4) st = gal_rom_residual_dir(m, &chk, du);
+            else st = gal_rom_cubic(m, m->x, chk.cubic);
         }
         t[b] = 1e6 * (bench_cpu() - t0) / n;
     }
@@ -86,7 +88,7 @@ static int run_size(void *arg, double *o)
     o[O_CHK_EL] = m->check_element_evaluations / ns, o[O_STEPS_S] = 1 / ro.h;
     o[O_IVL] = gal_rom_check_interval(m, 1.0); /* s between checks (integrator_rom.c's) */
     int st = part_us(m, 0, 200, &o[O_INT]) || part_us(m, 1, 200, &o[O_EXT]) || part_us(m, 2, 50, &o[O_TAN]) ||
-             part_us(m, 3, 3, &o[O_HCHK]) || part_us(m, 4, 3, &o[O_SELF]);
+             part_us(m, 3, 3, &o[O_HCHK]) || part_us(m, 4, 3, &o[O_SELF]) || part_us(m, 5, 3, &o[O_CUBIC]);
     if (st) fprintf(stderr, "bench_rom_step: %s\n", gal_error_message());
     gal_rom_free(m);
     gal_sim_setup_clear(&s);
@@ -105,15 +107,16 @@ int main(int argc, char **argv)
         if (bench_fork(run_size, arg, o, O_COUNT, &mb)) return 1;
         double sps = o[O_STEPS_S] * o[O_IVL]; /* steps per check */
         double passes = o[O_PASSES] * o[O_INT] + o[O_LOADS] * o[O_EXT], tan = o[O_TAN] * o[O_TANGENTS];
-        double checks = (o[O_HCHK] + o[O_SELF]) / sps, rest = o[O_STEP] - passes - tan - o[O_HCHK] / sps;
+        double checks = (o[O_HCHK] + o[O_SELF] + o[O_CUBIC]) / sps, rest = o[O_STEP] - passes - tan - o[O_HCHK] / sps;
         printf("ROW|%d elements|step %.2f us (%.0f steps/s): %.2f passes x internal %.2f + %.2f x loads %.2f us = %.2f, "
                "%.3f tangents x %.1f us = %.2f, sample check %.0f us every %.2f s = %.2f, rest %.2f; self-check %.0f us "
-               "= %.2f us/step more|per step: %.1f energy + %.1f load elements, %.1f by the sample check\n",
+               "= %.2f us/step more, its cubic part %.0f us = %.2f us/step more|per step: %.1f energy + %.1f load elements, %.1f by the "
+               "sample check\n",
                ne[k], o[O_STEP], o[O_STEPS_S], o[O_PASSES], o[O_INT], o[O_LOADS], o[O_EXT], passes, o[O_TANGENTS], o[O_TAN], tan,
-               o[O_HCHK], o[O_IVL], o[O_HCHK] / sps, rest, o[O_SELF], o[O_SELF] / sps, o[O_EL], o[O_LEL], o[O_CHK_EL]);
+               o[O_HCHK], o[O_IVL], o[O_HCHK] / sps, rest, o[O_SELF], o[O_SELF] / sps, o[O_CUBIC], o[O_CUBIC] / sps, o[O_EL], o[O_LEL], o[O_CHK_EL]);
         printf("BENCH|reduced-model step, %d elements, iced_gallop|%.2f|us CPU per step|%.2f Newton passes of %.2f us "
                "(sampled forces) and %.2f of the loads of %.2f us, checks %.2f us per step amortised (sample + self-check every %.2f s); run "
-               "of %d s\n", ne[k], o[O_STEP] + o[O_SELF] / sps, o[O_PASSES], o[O_INT], o[O_LOADS], o[O_EXT], checks, o[O_IVL], secs);
+               "of %d s\n", ne[k], o[O_STEP] + (o[O_SELF] + o[O_CUBIC]) / sps, o[O_PASSES], o[O_INT], o[O_LOADS], o[O_EXT], checks, o[O_IVL], secs);
         fflush(stdout);
     }
     return 0;

@@ -50,6 +50,8 @@ typedef struct gal_rom_adapt {
     double amp[GAL_FAMILY_COUNT]; /* the largest mass norm of each family's displacement so far */
     double twist_floor;     /* the mass norm of a 1-deg twist, half-sine along the span */
     int corrected[GAL_FAMILY_COUNT]; /* growths of the family by a correction alone so far */
+    long cubic_checks;      /* checks past GAL_ROM_CUBIC_SETTLE_S so far (the cubic part every
+                             * GAL_ROM_CUBIC_EVERY-th) */
 } gal_rom_adapt;
 
 /* The adaptation's set-up from the model's (the same arguments as gal_rom_alloc, copied; rod,
@@ -77,6 +79,9 @@ void gal_rom_adapt_clear(gal_rom_adapt *a);
  * Calibrated on tests/rom/ and the shipped and hard scenes (BENCHMARKS.md, helper misses2). */
 #define GAL_ROM_CUBIC_SHARE 0.3
 #define GAL_ROM_CUBIC_SETTLE_S 20.0
+/* Read at every this-th check: it costs two tangents of the whole rod, about twice the residual
+ * (tests/bench/bench_rom_step.c: 119 us against 59 at 100 elements); the orbit it watches repeats. */
+#define GAL_ROM_CUBIC_EVERY 3
 int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, double *du);
 
 /* Grow the basis of *m after the check chk (du: its correction direction, ndof) failed at the
