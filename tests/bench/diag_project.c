@@ -171,68 +171,6 @@ static void run_reduced(gal_sim_setup *s, const gal_sim_result *rf, const double
     gal_sim_result_clear(&rr);
 }
 
-/* --cost: where a step's time goes with nx extra vectors: the model as a run builds it (sampled,
- * the scene's step and damping), started at the full run's state at --cost-from, stepped for
- * --cost-span s without checks; the sample sizes, Newton iterations, tangents, halvings and element
- * evaluations per step, CPU per step; then the same with every element (hyper off) and with the
- * basis's stiffest direction's frequency (sqrt of the largest eigenvalue of V^T K0 V) */
-static double cost_from = -1, cost_span = 20;
-static void cost_probe(gal_sim_setup *s, const double *X, int nx, const char *label)
-{
-    gal_data *d = s->data;
-    const gal_modes *md = &d->md;
-    int sel[64], nsel = 0;
-    double fhi = 0;
-    for (int k = 0; k < md->n && nsel < 64; k++)
-        if (md->mode[k].selected) sel[nsel++] = k, fhi = fmax(fhi, md->mode[k].frequency_hz);
-    double dt_out = s->sc->simulation.output_interval;
-    if (!(dt_out > 0)) dt_out = fmin(0.05, 1.0 / (10 * fhi));
-    double h = s->sc->simulation.time_step;
-    if (!(h > 0)) h = fmin(dt_out, 1.0 / (40 * fhi));
-    int sub = (int)ceil(dt_out / h - 1e-9);
-    gal_force F = {0};
-    if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads;
-    for (int hyper = 1; hyper >= 0; hyper--) {
-        gal_rom_opts ro;
-        gal_rom_default_opts(&ro);
-        ro.h = dt_out / sub, ro.rho_inf = s->sc->simulation.rho_inf, ro.damping = d->damping, ro.hyper = hyper;
-        ro.extra = nx ? X : NULL, ro.nextra = nx;
-        clock_t c0 = clock();
-        gal_rom *m = gal_rom_alloc(d->eq.rod, d->eq.q, md, sel, nsel, &ro, &F);
-        if (!m) { printf("COST %s: %s\n", label, gal_error_message()); return; }
-        double tb = (double)(clock() - c0) / CLOCKS_PER_SEC;
-        /* the stiffest direction of the basis: V^T K0 V's largest eigenvalue */
-        gsl_matrix *A = gsl_matrix_alloc(m->r, m->r);
-        for (int i = 0; i < m->r * m->r; i++) A->data[i] = m->K0r[i];
-        gsl_vector *ev = gsl_vector_alloc(m->r);
-        gsl_eigen_symm_workspace *ew = gsl_eigen_symm_alloc(m->r);
-        gsl_eigen_symm(A, ev, ew);
-        double lmax = gsl_vector_max(ev);
-        gsl_eigen_symm_free(ew), gsl_vector_free(ev), gsl_matrix_free(A);
-        gal_rom_start(m, 0.0, d->q_start, NULL);
-        double t1 = cost_from >= 0 ? cost_from : 0;
-        int st = 0;
-        while (!st && m->t < t1 - 1e-9) st = gal_rom_step(m);
-        long s0 = m->steps, n0 = m->newton_iterations, k0 = m->tangents, f0 = m->force_evaluations, hv0 = m->halvings;
-        long e0 = m->element_evaluations, l0 = m->load_element_evaluations, c0e = m->check_element_evaluations;
-        c0 = clock();
-        while (!st && m->t < t1 + cost_span - 1e-9) st = gal_rom_step(m);
-        double cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
-        long ns = m->steps - s0;
-        gal_rom_hyper_info hi;
-        gal_rom_hyper_get_info(m, &hi);
-        printf("COST %s hyper %d: basis %d, sample %d energy / %d load elements (fit %.1e), stiffest %.1f Hz, h %.4f s "
-               "(w h %.1f); set-up %.2f s CPU; %ld steps from %.0f s%s: %.2f Newton, %.2f tangents, %.2f force evals, "
-               "%ld halvings, %.0f energy + %.0f load elements a step, %d re-samplings, %.0f check elements a step; %.1f us CPU a step\n",
-               label, hyper, m->r, hi.elements, hi.load_elements, hi.fit_error, sqrt(fmax(lmax, 0)) / (2 * GAL_PI), ro.h,
-               sqrt(fmax(lmax, 0)) * ro.h, tb, ns, t1, st ? " (FAILED)" : "", (double)(m->newton_iterations - n0) / ns,
-               (double)(m->tangents - k0) / ns, (double)(m->force_evaluations - f0) / ns, m->halvings - hv0,
-               (double)(m->element_evaluations - e0) / ns, (double)(m->load_element_evaluations - l0) / ns, hi.refits,
-               (double)(m->check_element_evaluations - c0e) / ns, 1e6 * cpu / fmax(ns, 1));
-        gal_rom_free(m);
-    }
-}
-
 /* everything main computes, for its parts */
 typedef struct {
     gal_sim_setup s;
