@@ -4,7 +4,8 @@
 # and spacer_positions together, positions at a support, unsorted, repeated or too close), nothing
 # crashes; spacer_positions at the evenly spaced places give the spacers' modes digit for digit,
 # uneven ones are placed on the nearest node within 1e-3 of the span (summary.json says where); an
-# 8-bundle on the largest separation runs; `simulate` warns below 6 elements a sub-span.
+# 8-bundle on the largest separation runs; `simulate` and `sweep` warn below 6 elements a sub-span;
+# spacer_stiffness out of range or below 100 N/m (but 0) exits 2 naming it.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
 pass=0; fail=0
@@ -91,6 +92,26 @@ grep -q 'warning: the explicit bundle.s mesh has 3 elements in its shortest sub-
 "$GALLOP" simulate "$tmp/coarse.ini" --model full --set simulation.duration=4 -o "$tmp/c24" > /dev/null 2> "$tmp/c24.err"
 ! grep -q 'mesh has' "$tmp/c24.err" && [ -s "$tmp/c24/trace.csv" ] && ok "6 elements a sub-span: no warning" ||
     bad "24 elements: $(cat "$tmp/c24.err")"
+
+# sweep warns as well (its cases run the explicit bundle's full model)
+"$GALLOP" sweep "$tmp/coarse.ini" --vary wind.speed=4 --set model.elements=12 --set simulation.duration=4 -o "$tmp/sw12" > /dev/null 2> "$tmp/sw12.err"
+grep -q 'gallop sweep: warning: the explicit bundle.s mesh has 3 elements in its shortest sub-span.*model.elements >= 24' "$tmp/sw12.err" &&
+    ok "sweep, 3 elements a sub-span: warned" || bad "sweep: no mesh warning: $(cat "$tmp/sw12.err")"
+"$GALLOP" sweep "$tmp/coarse.ini" --vary wind.speed=4 --set simulation.duration=4 -o "$tmp/sw24" > /dev/null 2> "$tmp/sw24.err"
+! grep -q 'mesh has' "$tmp/sw24.err" && [ -s "$tmp/sw24/sweep.csv" ] && ok "sweep, 6 elements a sub-span: no warning" ||
+    bad "sweep, 24 elements: $(cat "$tmp/sw24.err")"
+
+# flexible spacers ([bundle] spacer_stiffness): out of range or below the softest, exit 2 naming it
+refuse 12 spacer_stiffness '0 (rigid spacers) or 100 to 1e+09 N/m' "spacer_stiffness = 50"
+refuse 12 spacer_stiffness '0 <= spacer_stiffness <= 1000000000 N/m' "spacer_stiffness = 2e9"
+refuse 12 spacer_stiffness '0 <= spacer_stiffness' "spacer_stiffness = -3"
+refuse 12 spacer_stiffness 'not a number\|0 <= spacer_stiffness' "spacer_stiffness = stiff"
+# `gallop check` prints it (and reads its own print back); rigid scenes do not print it
+scene "spacers = 3
+spacer_stiffness = 2.5e5" > "$tmp/flex.ini"
+"$GALLOP" check "$tmp/flex.ini" > "$tmp/flex_chk.ini" 2>&1 && grep -q '^spacer_stiffness = 250000 ' "$tmp/flex_chk.ini" &&
+    "$GALLOP" check "$tmp/flex_chk.ini" > /dev/null 2>&1 && ! grep -q spacer_stiffness "$tmp/chk.ini" &&
+    ok "check prints spacer_stiffness and reads it back" || bad "check: $(grep -A9 '^\[bundle' "$tmp/flex_chk.ini")"
 
 echo "#summary $pass $fail"
 [ "$fail" -eq 0 ]

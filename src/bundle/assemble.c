@@ -9,15 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Adds v a b to the upper entry (I, J) of G, or records the pair. */
-typedef struct {
-    gal_csc *G;
-    long *pairs;
-    long np;
-    long ndof;
-} sink;
+typedef gal_bundle_sink sink;
+#define put gal_bundle_put
 
-static void put(sink *k, int I, int J, double v)
+void gal_bundle_put(gal_bundle_sink *k, int I, int J, double v)
 {
     if (I > J) { int t = I; I = J; J = t; }
     if (k->pairs) { k->pairs[k->np++] = (long)J * k->ndof + I; return; }
@@ -51,10 +46,10 @@ static int cmp_long(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The system's pattern: the rods' through T, the spacers' 6 x 6 blocks. */
+/* The system's pattern: the rods' through T, the spacers' 6 x 6 blocks, the flexible spacers' arms. */
 int gal_bundle_pattern(gal_bundle *b)
 {
-    long cap = 36L * b->ns + b->ndof;
+    long cap = 36L * b->ns + b->ndof + 144L * b->ns * b->n;
     for (int r = 0; r < b->n; r++) cap += 16L * b->rod[r]->K->nnz;
     sink k = {NULL, malloc((size_t)cap * sizeof(long)), 0, b->ndof};
     gal_csc *G = calloc(1, sizeof *G);
@@ -64,6 +59,7 @@ int gal_bundle_pattern(gal_bundle *b)
         for (int a = 0; a < 3 + b->nrot; a++)
             for (int c = a; c < 3 + b->nrot; c++) put(&k, b->sp0 + (3 + b->nrot) * sp + a, b->sp0 + (3 + b->nrot) * sp + c, 0);
     for (int d = 0; d < b->ndof; d++) put(&k, d, d, 0);
+    if (b->bp.spacer_stiffness > 0) gal_bundle_arms(b, b->state, NULL, &k);
     qsort(k.pairs, (size_t)k.np, sizeof(long), cmp_long);
     long nu = 0;
     for (long p = 0; p < k.np; p++)
@@ -87,7 +83,7 @@ int gal_bundle_pattern(gal_bundle *b)
 }
 
 /* E^T H E over the spacer's rotation dofs (H 3 x 3 on the rotation vector). */
-static void put_rot(const gal_bundle *b, const double *s, int sp, const double H[3][3], sink *k)
+void gal_bundle_put_rot(const gal_bundle *b, const double *s, int sp, const double H[3][3], gal_bundle_sink *k)
 {
     double E[3][3];
     int nr = gal_bundle_basis(b, s, sp, E), ph = b->sp0 + (3 + b->nrot) * sp + 3;
@@ -100,22 +96,26 @@ static void put_rot(const gal_bundle *b, const double *s, int sp, const double H
         }
 }
 
-/* The spacers' geometric stiffness from rod r's forces g at their nodes: for x = u + exp(phi x) p,
- * d2x/dphi_a dphi_b at phi = 0 is (e_a (e_b . p) + e_b (e_a . p)) / 2 - p delta_ab, so
- * H_ab = (g_a p_b + g_b p_a) / 2 - (g . p) delta_ab. */
+/* The geometric stiffness of spacer sp's rotation from the force f (the energy's gradient) on the
+ * point x = u + exp(phi x) p of sub-conductor r (p = R off_r): d2x/dphi_a dphi_b at phi = 0 is
+ * (e_a (e_b . p) + e_b (e_a . p)) / 2 - p delta_ab, so H_ab = (f_a p_b + f_b p_a) / 2 - (f . p) delta_ab. */
+void gal_bundle_geometric(const gal_bundle *b, const double *s, int sp, int r, const double f[3], gal_bundle_sink *k)
+{
+    const double *R = SP_R(b, s, sp);
+    double p[3], gp = 0, H[3][3];
+    for (int a = 0; a < 3; a++)
+        p[a] = R[3 * a] * b->off[r][0] + R[3 * a + 1] * b->off[r][1] + R[3 * a + 2] * b->off[r][2];
+    for (int a = 0; a < 3; a++) gp += f[a] * p[a];
+    for (int a = 0; a < 3; a++)
+        for (int c = 0; c < 3; c++) H[a][c] = 0.5 * (f[a] * p[c] + f[c] * p[a]) - (a == c) * gp;
+    gal_bundle_put_rot(b, s, sp, H, k);
+}
+
+/* Rigid spacers: the geometric stiffness from rod r's forces g at their nodes. */
 static void geometric(gal_bundle *b, int r, const double *s, const double *g)
 {
     sink k = {b->K, NULL, 0, b->ndof};
-    for (int sp = 0; sp < b->ns; sp++) {
-        const double *R = SP_R(b, s, sp), *f = g + 3 * b->spnode[sp];
-        double p[3], gp = 0, H[3][3];
-        for (int a = 0; a < 3; a++)
-            p[a] = R[3 * a] * b->off[r][0] + R[3 * a + 1] * b->off[r][1] + R[3 * a + 2] * b->off[r][2];
-        for (int a = 0; a < 3; a++) gp += f[a] * p[a];
-        for (int a = 0; a < 3; a++)
-            for (int c = 0; c < 3; c++) H[a][c] = 0.5 * (f[a] * p[c] + f[c] * p[a]) - (a == c) * gp;
-        put_rot(b, s, sp, H, &k);
-    }
+    for (int sp = 0; sp < b->ns; sp++) gal_bundle_geometric(b, s, sp, r, g + 3 * b->spnode[sp], &k);
 }
 
 /* The spacers: weight (energy and gradient), mass and inertia R diag(J, J/2, J/2) R^T (a plane
@@ -139,7 +139,7 @@ static void spacers(gal_bundle *b, const double *s, double *U, int tangent)
                 for (int l = 0; l < 3; l++) H[a][c] += R[3 * a + l] * Jb[l] * R[3 * c + l];
             }
         }
-        put_rot(b, s, sp, H, &k);
+        gal_bundle_put_rot(b, s, sp, H, &k);
     }
 }
 
@@ -167,10 +167,14 @@ int gal_bundle_eval(gal_bundle *b, const double *s, double *energy, int tangent)
             sink kk = {b->K, NULL, 0, b->ndof}, km = {b->M, NULL, 0, b->ndof};
             congruence(b, r, b->Kr[r], &kk);
             congruence(b, r, rod->M, &km);
-            geometric(b, r, s, b->gq);
+            if (!(b->bp.spacer_stiffness > 0)) geometric(b, r, s, b->gq);
         }
     }
     spacers(b, s, &E, tangent);
+    if (b->bp.spacer_stiffness > 0) {
+        sink kk = {b->K, NULL, 0, b->ndof};
+        E += gal_bundle_arms(b, s, b->grad, tangent ? &kk : NULL);
+    }
     if (energy) *energy = E;
     return GAL_OK;
 }

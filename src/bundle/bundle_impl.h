@@ -16,6 +16,23 @@ void gal_bundle_expmap(const double w[3], double R[9]);
 void gal_bundle_tangent(const gal_bundle *b, const double *q, int i, double t[3]);
 void gal_bundle_map_values(gal_bundle *b, const double *s);
 int gal_bundle_pattern(gal_bundle *b);
+/* The system's tangent being assembled (upper triangle): gal_bundle_put adds v to the entry (I, J)
+ * of G, or (pairs not NULL) records the pair for the pattern. */
+typedef struct gal_bundle_sink {
+    gal_csc *G;
+    long *pairs;
+    long np;
+    long ndof;
+} gal_bundle_sink;
+void gal_bundle_put(gal_bundle_sink *k, int I, int J, double v);
+/* E^T H E onto spacer sp's rotation dofs (H 3 x 3 on the rotation vector) */
+void gal_bundle_put_rot(const gal_bundle *b, const double *s, int sp, const double H[3][3], gal_bundle_sink *k);
+/* the geometric stiffness of spacer sp's rotation from the force f on sub-conductor r's point */
+void gal_bundle_geometric(const gal_bundle *b, const double *s, int sp, int r, const double f[3], gal_bundle_sink *k);
+/* Flexible spacers (arms.c): the arms' energy at the state s, their gradient added to grad (when
+ * not NULL) and their tangent to k (when not NULL; its pattern when k->pairs). */
+double gal_bundle_arms(const gal_bundle *b, const double *s, double *grad, gal_bundle_sink *k);
+
 /* spacer sp's rotation basis E[0..nrot-1] at state s; returns nrot */
 int gal_bundle_basis(const gal_bundle *b, const double *s, int sp, double E[3][3]);
 

@@ -176,7 +176,8 @@ static double force_tolerance(const gal_bundle_dyn *d, double h, double rel)
     }
     scale = fmax(scale, mmax * 9.81);
     for (int k = 0; k < 3 * b->nn; k++) qm = fmax(qm, fabs(d->s[k]));
-    double elastic = 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0];
+    double kmax = fmax(rod->p.EA / rod->l0[0], b->bp.spacer_stiffness); /* flexible spacers' arms too */
+    double elastic = 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) * kmax;
     double inertia = 20 * DBL_EPSILON * qm * mmax * (1 - d->am) / (d->beta * h * h);
     return fmax(rel * scale, fmax(elastic, inertia));
 }

@@ -15,6 +15,7 @@ void gal_bundle_params_of(const gal_scene *sc, gal_bundle_params *bp)
     bp->positions = sc->bundle.nspacer_positions ? sc->bundle.spacer_positions : NULL;
     bp->spacer_mass = sc->bundle.spacer_mass;
     bp->spacer_inertia = sc->bundle.spacer_inertia;
+    bp->spacer_stiffness = sc->bundle.spacer_stiffness;
 }
 
 int gal_bundle_solve_model(const gal_model *m, gal_bundle **out, gal_modes *md)

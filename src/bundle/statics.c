@@ -174,7 +174,8 @@ int gal_bundle_statics(const gal_rod_params *p, const gal_bundle_params *bp, gal
     const gal_catenary *cat = &eq1.cat;
     double Tcat = sqrt(cat->H * cat->H + cat->V0 * cat->V0);
     w.ftol = fmax(opts.force_tol * fmax(fmax(Tcat, cat->w * cat->L0), 1.0),
-                  20 * DBL_EPSILON * fmax(p1.length, fabs(p1.height_difference)) * p1.EA * p1.elements / cat->L0);
+                  20 * DBL_EPSILON * fmax(p1.length, fabs(p1.height_difference)) *
+                      fmax(p1.EA * p1.elements / cat->L0, bp->spacer_stiffness));
     st = newton(&w, &b->residual);
     if (!st && spec != GAL_BY_LENGTH) st = solve_length(&w, cat, spec, value, opts.max_length_iter, &b->residual);
     if (!st) figures(b);

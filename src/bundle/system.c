@@ -118,11 +118,12 @@ int gal_bundle_basis(const gal_bundle *b, const double *s, int sp, double E[3][3
 /* The global indices of the map (fixed) and the number of the system's dofs. */
 static void map_indices(gal_bundle *b)
 {
-    int nd = 0, nr = b->nrot;
+    int nd = 0, nr = b->nrot, rigid = !(b->bp.spacer_stiffness > 0);
     for (int r = 0; r < b->n; r++) { /* the independent dofs first */
         const gal_rod *rod = b->rod[r];
         for (int d = 0; d < rod->ndof; d++) {
             int q = rod->free_q[d], dep = q < 3 * b->nn ? b->spat[q / 3] >= 0 : b->spat[q - 3 * b->nn] >= 0;
+            dep = dep && rigid; /* flexible spacers: the nodes are free, tied by the arms (arms.c) */
             b->tcnt[r][d] = dep ? 0 : 1;
             if (!dep) b->tidx[r][4 * d] = nd++, b->tval[r][4 * d] = 1.0;
         }
@@ -209,6 +210,7 @@ double *gal_bundle_q(const gal_bundle *b, double *s, int r)
 static void dependents(const gal_bundle *b, double *s)
 {
     int nn = b->nn;
+    if (b->bp.spacer_stiffness > 0) return; /* flexible: the nodes are the system's dofs */
     for (int sp = 0; sp < b->ns; sp++) {
         int i = b->spnode[sp];
         const double *u = SP_U(b, s, sp), *R = SP_R(b, s, sp), *psi = SP_PSI(b, s, sp);

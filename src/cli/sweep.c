@@ -166,6 +166,7 @@ static int options(sweep *S)
             fprintf(stderr, "gallop sweep: [bundle] model = explicit: every case runs the explicit bundle's full "
                     "model (it has no reduced model in a sweep)\n");
         S->kind = GAL_MODEL_FULL;
+        if (!st) gal_cli_bundle_mesh_warning(&S->sc, "sweep"); /* the scene's mesh, before --vary */
     }
     if (!st) st = gal_sweep_grid_check(&S->g, S->path, S->user, S->nuser);
     return st;

@@ -268,6 +268,13 @@ static int bundle_checks(pstate *ps)
                              "supports); allowed: sub-spans of at least %g of the span", b - a, a, b, gap);
     }
     sc->bundle.model_line = ps->given[K_BMODEL]; /* for the commands that refuse explicit */
+    double ks = sc->bundle.spacer_stiffness;
+    if (ks > 0 && ks < GAL_SPACER_STIFFNESS_MIN)
+        return scn_kfail(ps, K_BSSTIFF, "%g N/m; allowed: 0 (rigid spacers) or %g to %g N/m", ks,
+                         GAL_SPACER_STIFFNESS_MIN, GAL_SPACER_STIFFNESS_MAX);
+    if (ks > 0 && !sc->bundle.explicit_model)
+        return scn_kfail(ps, K_BSSTIFF, "flexible spacers with [bundle] model = equivalent (one rod: its "
+                         "spacers are rigid); allowed: model = explicit, or spacer_stiffness = 0");
     if (!sc->effect[GAL_FX_TORSION])
         return scn_kfail(ps, K_BSUB, "a bundle with [effects] torsion = off: its twist is what the "
                      "bundle changes; allowed: torsion = on, or subconductors = 1");

@@ -143,6 +143,9 @@ const keydef scn_keys[K_COUNT] = {
     NUM("bundle", "wake_factor", bundle.wake_factor, 0, 0, 1, 0,
         "-, explicit model: the dynamic pressure of a leeward sub-conductor (in another's wake, at rest) "
         "over the free stream's (1: no shielding)"),
+    NUM("bundle", "spacer_stiffness", bundle.spacer_stiffness, 0, 0, GAL_SPACER_STIFFNESS_MAX, 0,
+        "N/m, explicit model: a spacer arm's stiffness at its clamp (0: rigid spacers; flexible: at "
+        "least 100)"),
     {"bundle", "model", T_ENUM, 0, 0, 0, 0, 0, 1.0,
      "equivalent | explicit (equivalent: one rod with the bundle's mass, inertia and tension-given "
      "torsional stiffness; explicit: one rod per sub-conductor, joined by the spacers)",

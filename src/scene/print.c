@@ -205,6 +205,7 @@ static void print_bundle(const gal_scene *sc, FILE *fp)
     put_key(fp, sc, K_BSMASS);
     put_key(fp, sc, K_BSINERTIA);
     if (sc->bundle.explicit_model) put_key(fp, sc, K_BWAKE); /* the explicit model's alone */
+    if (sc->bundle.spacer_stiffness > 0) put_key(fp, sc, K_BSSTIFF); /* flexible spacers alone */
     fprintf(fp, "model = %s ; equivalent | explicit\n",
             scn_bundle_model_names[sc->bundle.explicit_model ? 1 : 0]);
     fprintf(fp, "; radius of the bundle circle: %.6g m\n", sc->bundle.radius);

@@ -12,7 +12,11 @@
  * plus the spacers' geometric term (the rod forces at the spacer nodes times the second derivative
  * of R p_k), the mass T^T M_r T plus the spacers' mass and inertia (about the bundle axis as given,
  * half of it about the two axes across: a plane frame). Newton steps rotate the spacers by
- * exp(dphi x). */
+ * exp(dphi x).
+ *
+ * Flexible spacers (bp.spacer_stiffness > 0, src/bundle/arms.c): the spacer nodes are not
+ * eliminated but free dofs of their rods, each tied to its clamp point u + R p_k by an arm spring
+ * (k on the displacement, k r^2 on the node's twist less psi_k); the frames keep their 6 dofs. */
 #ifndef GALLOP_BUNDLE_H
 #define GALLOP_BUNDLE_H
 
@@ -39,6 +43,7 @@ typedef struct gal_bundle_params {
                               * (each on the node nearest it, within GAL_BUNDLE_SNAP of the span) */
     double spacer_mass;      /* kg, of one */
     double spacer_inertia;   /* kg m^2, of one about the bundle axis */
+    double spacer_stiffness; /* N/m, flexible spacers: an arm's stiffness at its clamp; 0: rigid */
 } gal_bundle_params;
 
 /* The assembled bundle at a state: the rods, their configurations, the spacers' state, the map of

@@ -13,6 +13,8 @@ extern "C" {
 #define GAL_MAX_PROBES 16
 #define GAL_MAX_SPACER_POSITIONS 64 /* [bundle] spacer_positions */
 #define GAL_BUNDLE_MIN_SUBSPAN 0.005 /* shortest sub-span of spacer_positions, fraction of the span */
+#define GAL_SPACER_STIFFNESS_MIN 100.0 /* N/m, [bundle] spacer_stiffness: the softest flexible spacer */
+#define GAL_SPACER_STIFFNESS_MAX 1e9   /* N/m, the stiffest (stiffer: use 0, rigid) */
 #define GAL_MAX_NEIGHBOURS 8
 
 /* How the equilibrium is specified: exactly one of these ([span] horizontal_tension, sag,
@@ -138,6 +140,7 @@ typedef struct gal_scene {
         double spacer_mass;       /* kg, of one spacer */
         double spacer_inertia;    /* kg m^2, of one spacer about the bundle axis */
         double wake_factor;       /* -, explicit model: leeward sub-conductors' dynamic pressure factor */
+        double spacer_stiffness;  /* N/m, explicit model: a spacer arm's at its clamp; 0: rigid */
         int explicit_model;       /* 1: one rod per sub-conductor; 0: one equivalent rod */
         int model_line;           /* the scene line of [bundle] model (-1: --set, 0: not given) */
     } bundle;
