@@ -4,7 +4,8 @@
 # shapes.csv column sub, modes.csv share_subspan); `simulate` (reduced, the default, and --model full)
 # and `stability` run it, trace.csv with the centroid's columns and each sub-conductor's (suffix
 # _s<k>), the reduced run self-checked (exit 1 past the tolerance, valid: false with warn); `compare`
-# writes compare.csv with both runs per sub-conductor, or the full run alone (exit 1) when the reduced
+# writes compare.csv with both runs per sub-conductor (measured as the centroid, at its headline
+# probes over its window), or the full run alone (exit 1) when the reduced
 # fails; `sweep` runs it (test_sweep_bundle.sh); accuracy refuses it with exit 2, naming the file, the line and [bundle] model, and
 # saying equivalent is what runs.
 set -u
@@ -81,6 +82,26 @@ done
 subs=$(tr -d ' \n' < "$tmp/cmp/summary.json" 2>/dev/null | grep -o '"sub":[0-9]' | tr '\n' ' ')
 [ "$subs" = '"sub":1 "sub":2 "sub":3 "sub":4 ' ] && ok "compare summary.json per sub-conductor" ||
     bad "compare summary.json: '$subs'"
+# the centroid's and every sub-conductor's figures are measured alike (gal_compare_measure): over the
+# window, each family at the centroid's headline probe, the columns of compare.csv
+py=$(python3 - "$tmp/cmp/summary.json" "$tmp/cmp/compare.csv" <<'PY'
+import csv, json, sys
+s = json.load(open(sys.argv[1])); rows = list(csv.DictReader(open(sys.argv[2])))
+t0 = s["steady_from_s"]; bad = []
+def pp(col):
+    z = [float(r[col]) for r in rows if float(r["time_s"]) >= t0 - 1e-9]
+    return max(z) - min(z)
+fam = (("vertical_m", "vertical_peak_to_peak_m"), ("horizontal_m", "horizontal_peak_to_peak_m"), ("twist_deg", "twist_peak_to_peak_deg"))
+for run in ("full", "reduced"):
+    for c, key in fam:
+        if abs(pp("%s_%s" % (run, c)) - s[run][key]) > 1e-6 * abs(s[run][key]) + 1e-12: bad.append("centroid %s %s" % (run, c))
+        for sub in s["subconductors"]:
+            got, want = sub[run][key], pp("%s_%s_s%d" % (run, c, sub["sub"]))
+            if abs(got - want) > 1e-6 * abs(want) + 1e-12: bad.append("sub %d %s %s %g %g" % (sub["sub"], run, c, got, want))
+print("ok" if not bad else "bad " + "; ".join(bad[:4]))
+PY
+)
+[ "$py" = ok ] && ok "compare: centroid and sub-conductors measured over the window at the headline probes" || bad "compare measures: $py"
 # the reduced model failing in compare: the full model's results alone, exit 1
 "$GALLOP" compare "$tmp/quad.ini" --set simulation.duration=20 --set model.residual_tolerance=1e-9 -o "$tmp/cf" > "$tmp/cf.txt" 2>&1
 rc=$?

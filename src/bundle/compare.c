@@ -1,9 +1,12 @@
 /* compare.c: the output files of `gallop compare` on the explicit bundle (bundle_rom.h; README
- * "Bundles"): both runs' centroid at the mid probe under the single rod's compare.csv names, then
- * every sub-conductor's suffixed _s<k> with its support tensions; summary.json with the single
- * rod's figures for the centroid and, per sub-conductor, both runs' measures and their errors. */
+ * "Bundles"): both runs' centroid, each family at its headline probe (analysis/compare.h: where the
+ * full run's centroid moves most), under the single rod's compare.csv names, then every
+ * sub-conductor's at the same probes suffixed _s<k> with its support tensions; summary.json with
+ * the single rod's figures for the centroid and, per sub-conductor, both runs' measures as the
+ * single rod's (gal_compare_measure: the centroid's window and headline probes) and their errors. */
 #include "gallop/bundle/bundle_rom.h"
 #include "gallop/base/core.h"
+#include "gallop/analysis/compare.h"
 #include "gallop/analysis/measure.h"
 #include "gallop/output/outset.h"
 #include "gallop/output/simreport.h"
@@ -30,22 +33,24 @@ static void csv_header(FILE *fp, int n)
     fputc('\n', fp);
 }
 
-static int write_csv(gal_outset *o, const gal_bundle_sim_result *F, const gal_bundle_sim_result *R)
+static int write_csv(gal_outset *o, const gal_bundle_sim_result *F, const gal_bundle_sim_result *R,
+                     const gal_compare_figures *c)
 {
     FILE *fp = gal_outset_open(o, "compare.csv");
     if (!fp) return GAL_EIO;
-    int n = F->n, kp = gal_sim_mid_probe(&F->c);
+    int n = F->n, kv = 4 * c->headline[GAL_CMP_VERTICAL] + 1, kh = 4 * c->headline[GAL_CMP_HORIZONTAL];
+    int kt = 4 * c->headline[GAL_CMP_TWIST] + 3;
     size_t np4 = 4 * (size_t)F->c.nprobe;
     csv_header(fp, n);
     long ns = F->c.nsamples < R->c.nsamples ? F->c.nsamples : R->c.nsamples;
     for (long i = 0; i < ns; i++) {
-        const double *a = F->c.trace + i * np4 + 4 * kp, *b = R->c.trace + i * np4 + 4 * kp;
-        fprintf(fp, "%.9g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g", F->c.time[i], a[1], b[1], a[0], b[0], a[3], b[3]);
+        const double *a = F->c.trace + i * np4, *b = R->c.trace + i * np4;
+        fprintf(fp, "%.9g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g", F->c.time[i], a[kv], b[kv], a[kh], b[kh], a[kt], b[kt]);
         for (int r = 0; r < n; r++) {
-            const double *sa = F->sub + ((size_t)i * n + r) * np4 + 4 * kp, *sb = R->sub + ((size_t)i * n + r) * np4 + 4 * kp;
+            const double *sa = F->sub + ((size_t)i * n + r) * np4, *sb = R->sub + ((size_t)i * n + r) * np4;
             const double *ta = F->tension + ((size_t)i * n + r) * 2, *tb = R->tension + ((size_t)i * n + r) * 2;
-            fprintf(fp, ",%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g", sa[1], sb[1], sa[0], sb[0], sa[3], sb[3],
-                    ta[0], tb[0], ta[1], tb[1]);
+            fprintf(fp, ",%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g", sa[kv], sb[kv], sa[kh], sb[kh], sa[kt],
+                    sb[kt], ta[0], tb[0], ta[1], tb[1]);
         }
         fputc('\n', fp);
     }
@@ -96,10 +101,16 @@ static void json_run(gal_json *j, const char *key, const gal_bundle_sim_result *
     gal_json_obj_end(j);
 }
 
-/* Per sub-conductor: both runs' measures at the mid probe over the full run's steady window. */
-static int json_subs(gal_json *j, const gal_bundle_sim_result *F, const gal_bundle_sim_result *R, double from)
+/* Per sub-conductor: both runs' measures over the centroid's window, each family at the centroid's
+ * headline probe (gal_compare_measure, as the centroid's record). */
+static int json_subs(gal_json *j, const gal_bundle_sim_result *F, const gal_bundle_sim_result *R,
+                     const gal_compare_figures *c)
 {
-    int st = GAL_OK, kp = gal_sim_mid_probe(&F->c);
+    int st = GAL_OK;
+    gal_compare_ref h;
+    memset(&h, 0, sizeof h);
+    h.from = c->full.steady_from_s;
+    for (int f = 0; f < GAL_CMP_FAMILIES; f++) h.headline[f] = c->headline[f], h.position[f] = F->c.probe[c->headline[f]];
     gal_json_key(j, "subconductors");
     gal_json_arr_begin(j);
     for (int r = 0; r < F->n && !st; r++) {
@@ -108,8 +119,8 @@ static int json_subs(gal_json *j, const gal_bundle_sim_result *F, const gal_bund
         memset(&sf, 0, sizeof sf), memset(&sr, 0, sizeof sr);
         st = gal_bundle_sim_sub(F, r, &sf);
         if (!st) st = gal_bundle_sim_sub(R, r, &sr);
-        if (!st) st = gal_sim_measure(&sf, kp, from, &mf);
-        if (!st) st = gal_sim_measure(&sr, kp, from, &mr);
+        if (!st) st = gal_compare_measure(&sf, &h, &mf);
+        if (!st) st = gal_compare_measure(&sr, &h, &mr);
         if (!st) {
             gal_json_obj_begin(j);
             gal_json_kv_int(j, "sub", r + 1);
@@ -146,7 +157,7 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle_si
     json_run(j, "full", F, mf);
     json_run(j, "reduced", R, mr);
     gal_compare_figures_json(j, c);
-    return json_subs(j, F, R, mf->steady_from_s);
+    return json_subs(j, F, R, c);
 }
 
 int gal_bundle_write_compare(const char *dir, const gal_scene *sc, const gal_bundle_sim_result *full,
@@ -160,7 +171,7 @@ int gal_bundle_write_compare(const char *dir, const gal_scene *sc, const gal_bun
     gal_outset *o;
     st = gal_outset_begin(&o, dir, "compare");
     if (!st) st = gal_outset_scene(o, sc);
-    if (!st) st = write_csv(o, full, red);
+    if (!st) st = write_csv(o, full, red, &c);
     if (!st) st = write_summary(o, sc, full, red, mf, mr, &c);
     if (!st) st = gal_outset_commit(o);
     gal_outset_free(o);
