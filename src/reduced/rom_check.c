@@ -21,21 +21,6 @@
 
 enum { TERM_R, TERM_MA, TERM_CV, TERM_G, TERM_F, NTERM };
 
-/* The directions of the families at node i (the tangent t, the horizontal ey, the in-plane normal
- * nv) from the equilibrium chord of its neighbours. */
-static void node_frame(const gal_rom *m, int i, double t[3], double ey[3], double nv[3])
-{
-    int nn = m->rod->nn, a = i > 0 ? i - 1 : i, b = i < nn - 1 ? i + 1 : i;
-    for (int k = 0; k < 3; k++) t[k] = m->q_eq[3 * b + k] - m->q_eq[3 * a + k], ey[k] = k == 1;
-    double lt = gal_norm3(t);
-    for (int k = 0; k < 3; k++) t[k] /= lt;
-    double ty = gal_dot3(ey, t);
-    for (int k = 0; k < 3; k++) ey[k] -= ty * t[k];
-    double ly = gal_norm3(ey);
-    for (int k = 0; k < 3; k++) ey[k] /= ly;
-    gal_cross3(t, ey, nv);
-}
-
 /* The first free dof of node i when its three translations are free, else -1. */
 static int node_dof(const gal_rod *rod, int i)
 {
@@ -52,7 +37,7 @@ static void accumulate(const gal_rom *m, const double *y, const double *z, const
         int d0 = node_dof(rod, i);
         if (d0 < 0) continue;
         double t[3], ey[3], nv[3];
-        node_frame(m, i, t, ey, nv);
+        gal_rod_node_directions(m->rod, m->q_eq, i, t, ey, nv);
         double yv = gal_dot3(nv, y + d0), yh = gal_dot3(ey, y + d0), ya = gal_dot3(t, y + d0);
         double zv = gal_dot3(nv, z + d0), zh = gal_dot3(ey, z + d0), za = gal_dot3(t, z + d0);
         double w = mdiag ? mdiag[d0] : 1;
@@ -89,7 +74,7 @@ static int scale_floors(gal_rom *m, double *load, double *du, double floor[GAL_F
             int d0 = node_dof(rod, i);
             if (d0 < 0) continue;
             double e[3][3], w = GAL_ROM_CHECK_LOAD * rod->mdiag[d0] * rod->p.gravity;
-            node_frame(m, i, e[2], e[1], e[0]); /* vertical, horizontal, axial */
+            gal_rod_node_directions(m->rod, m->q_eq, i, e[2], e[1], e[0]); /* vertical, horizontal, axial */
             for (int c = 0; c < 3; c++) load[d0 + c] = w * e[k][c];
         }
         int st = gal_chol_solve(m->chol0, load, du);

@@ -27,6 +27,19 @@ void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t
     for (int k = 0; k < 3; k++) d1[k] = cos(th) * a[k] + sin(th) * b[k];
 }
 
+void gal_rod_node_directions(const gal_rod *rod, const double *q, int i, double t[3], double ey[3], double nv[3])
+{
+    int nn = rod->nn, a = i > 0 ? i - 1 : i, b = i < nn - 1 ? i + 1 : i;
+    for (int k = 0; k < 3; k++) t[k] = q[3 * b + k] - q[3 * a + k], ey[k] = k == 1;
+    double lt = gal_norm3(t);
+    for (int k = 0; k < 3; k++) t[k] /= lt;
+    double ty = gal_dot3(ey, t);
+    for (int k = 0; k < 3; k++) ey[k] -= ty * t[k];
+    double ly = gal_norm3(ey);
+    for (int k = 0; k < 3; k++) ey[k] /= ly;
+    gal_cross3(t, ey, nv);
+}
+
 int gal_rod_frames_init(gal_rod *rod, const double *q0)
 {
     int nel = rod->p.elements;

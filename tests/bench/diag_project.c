@@ -83,16 +83,8 @@ typedef struct { int node, bin; double dir[3][3]; } nodeinfo; /* dir: v, h, axia
 static void node_dirs(const gal_rod *rod, const double *qeq, nodeinfo *ni)
 {
     for (int i = 0; i < rod->nn; i++) {
-        int a = i > 0 ? i - 1 : i, b = i < rod->nn - 1 ? i + 1 : i;
-        double t[3], ey[3] = {0, 1, 0}, nv[3];
-        for (int k = 0; k < 3; k++) t[k] = qeq[3 * b + k] - qeq[3 * a + k];
-        double lt = gal_norm3(t);
-        for (int k = 0; k < 3; k++) t[k] /= lt;
-        double ty = gal_dot3(ey, t);
-        for (int k = 0; k < 3; k++) ey[k] -= ty * t[k];
-        double ly = gal_norm3(ey);
-        for (int k = 0; k < 3; k++) ey[k] /= ly;
-        gal_cross3(t, ey, nv);
+        double t[3], ey[3], nv[3];
+        gal_rod_node_directions(rod, qeq, i, t, ey, nv);
         memcpy(ni[i].dir[0], nv, sizeof nv), memcpy(ni[i].dir[1], ey, sizeof ey), memcpy(ni[i].dir[2], t, sizeof t);
         ni[i].bin = (int)fmin(NBIN - 1, floor(NBIN * (double)i / (rod->nn - 1)));
     }

@@ -24,16 +24,8 @@ static void fam(const gal_rod *rod, const double *qeq, const double *y, double a
     for (int i = 0; i < rod->nn; i++) {
         int d0 = rod->dof[3 * i];
         if (d0 < 0) continue;
-        int a = i > 0 ? i - 1 : i, b = i < rod->nn - 1 ? i + 1 : i;
-        double t[3], ey[3] = {0, 1, 0}, nv[3];
-        for (int k = 0; k < 3; k++) t[k] = qeq[3 * b + k] - qeq[3 * a + k];
-        double lt = gal_norm3(t);
-        for (int k = 0; k < 3; k++) t[k] /= lt;
-        double ty = gal_dot3(ey, t);
-        for (int k = 0; k < 3; k++) ey[k] -= ty * t[k];
-        double ly = gal_norm3(ey);
-        for (int k = 0; k < 3; k++) ey[k] /= ly;
-        gal_cross3(t, ey, nv);
+        double t[3], ey[3], nv[3];
+        gal_rod_node_directions(rod, qeq, i, t, ey, nv);
         double w = rod->mdiag[d0];
         double yv = gal_dot3(nv, y + d0), yh = gal_dot3(ey, y + d0), ya = gal_dot3(t, y + d0);
         acc[0] += w * yv * yv, acc[1] += w * yh * yh, acc[3] += w * ya * ya;

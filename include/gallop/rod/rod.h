@@ -187,6 +187,11 @@ void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension);
  * the reference director carried to t by the minimal rotation, turned by the edge's twist). */
 void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3]);
 
+/* The directions of the motion families at node i of configuration q (the equilibrium, for the
+ * reduced model's self-check): the unit tangent t of the chord of its neighbours (its own node at an
+ * end), the horizontal ey (the y axis normal to t) and the in-plane normal nv = t x ey. */
+void gal_rod_node_directions(const gal_rod *rod, const double *q, int i, double t[3], double ey[3], double nv[3]);
+
 /* Change the unstretched length (rest lengths and lumped masses follow); reference frames stay. */
 void gal_rod_set_unstretched_length(gal_rod *rod, double L0);
 #ifdef __cplusplus
