@@ -102,16 +102,7 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_bundle *b
                     "block per mode separated by two blank lines");
     gal_json_kv_str(j, "units", "x_m, z_m: m (equilibrium); ux, uy, uz: m/sqrt(kg); twist: rad/sqrt(kg m^2)");
     gal_json_obj_end(j);
-    gal_json_key(j, "families");
-    gal_json_obj_begin(j);
-    for (int fam = 0; fam < 3; fam++) {
-        gal_json_key(j, gal_family_names[fam]);
-        gal_json_obj_begin(j);
-        gal_json_kv_int(j, "asked", want[fam]);
-        gal_json_kv_int(j, "found", md->selected[fam]);
-        gal_json_obj_end(j);
-    }
-    gal_json_obj_end(j);
+    gal_report_families_json(j, md, want);
     gal_json_kv_int(j, "subspan_modes_computed", md->found[GAL_FAMILY_SUBSPAN]);
     gal_json_key(j, "modes");
     gal_json_arr_begin(j);

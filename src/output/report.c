@@ -113,6 +113,20 @@ static int write_shapes(gal_outset *o, const gal_equilibrium *eq, const gal_mode
     return gal_outset_close(o, fp);
 }
 
+void gal_report_families_json(gal_json *j, const gal_modes *md, const int want[GAL_FAMILY_COUNT])
+{
+    gal_json_key(j, "families");
+    gal_json_obj_begin(j);
+    for (int fam = 0; fam < 3; fam++) {
+        gal_json_key(j, gal_family_names[fam]);
+        gal_json_obj_begin(j);
+        gal_json_kv_int(j, "asked", want[fam]);
+        gal_json_kv_int(j, "found", md->selected[fam]);
+        gal_json_obj_end(j);
+    }
+    gal_json_obj_end(j);
+}
+
 static int write_summary(gal_outset *o, const gal_scene *sc, const gal_equilibrium *eq,
                          const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall)
 {
@@ -156,16 +170,7 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_equilibri
     gal_json_obj_begin(j);
     for (int e = 0; e < GAL_FX_COUNT; e++) gal_json_kv_str(j, gal_effect_names[e], sc->effect[e] ? "on" : "off");
     gal_json_obj_end(j);
-    gal_json_key(j, "families");
-    gal_json_obj_begin(j);
-    for (int fam = 0; fam < 3; fam++) {
-        gal_json_key(j, gal_family_names[fam]);
-        gal_json_obj_begin(j);
-        gal_json_kv_int(j, "asked", want[fam]);
-        gal_json_kv_int(j, "found", md->selected[fam]);
-        gal_json_obj_end(j);
-    }
-    gal_json_obj_end(j);
+    gal_report_families_json(j, md, want);
     gal_json_key(j, "frequencies");
     gal_json_arr_begin(j);
     for (int k = 0; k < md->n; k++)

@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "gallop/modes/modes.h"
+#include "gallop/output/json.h"
 #include "gallop/output/outset.h"
 #include "gallop/scene/scene.h"
 #include "gallop/statics/statics.h"
@@ -26,6 +27,9 @@ int gal_report_modes_csv(gal_outset *o, const gal_modes *md, int subspan);
 /* The table of `gallop modes` (equilibrium figures, then one line per selected mode). */
 void gal_report_modes_table(FILE *fp, const gal_scene *sc, const gal_equilibrium *eq,
                             const gal_modes *md, const int want[GAL_FAMILY_COUNT], double wall_time_s);
+
+/* summary.json's "families" object into j: each family's modes asked and selected. */
+void gal_report_families_json(gal_json *j, const gal_modes *md, const int want[GAL_FAMILY_COUNT]);
 
 /* The table's notes on the selection (gal_modes_select): each torsional partner with the vertical
  * mode it was added for, and each family with fewer selected than asked. */
