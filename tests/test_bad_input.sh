@@ -5,11 +5,8 @@
 # message names the file, the line and the key, and nothing is written in the -o directory.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_bad_input_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch bad_input
 
 cp data/aero/iced_d_shape.csv "$tmp/good.csv"
 # a valid iced scene with wind: every command would run it; line numbers matter below
@@ -278,5 +275,4 @@ refused scene_empty "$tmp/empty.ini" 0 "length"
 head -c 2048 /dev/urandom >"$tmp/junk.ini"
 refused scene_binary_junk "$tmp/junk.ini" 0 "junk.ini"
 
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

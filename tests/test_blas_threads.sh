@@ -8,11 +8,8 @@
 # message about memory. Skipped in the sanitizer build (ASan reserves terabytes of address space).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_blas_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch blas
 if nm -an "$GALLOP" 2>/dev/null | grep -q __asan_init || ldd "$GALLOP" 2>/dev/null | grep -q libasan; then
   echo "  skip: sanitizer build (ulimit -v does not apply)"
   echo "#summary 0 0"; exit 0
@@ -54,5 +51,4 @@ n=$(awk '/^Threads:/ {print $2}' "/proc/$pid/status" 2>/dev/null)
 wait $pid
 [ -z "$n" ] || [ "$n" -eq 1 ] && ok "one thread by default (${n:-ended before sampling})" \
   || bad "$n threads by default"
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

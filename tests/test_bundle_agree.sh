@@ -10,14 +10,9 @@
 # -0.1%); the long runs (500-1200 s, the shipped mesh, the twin) are BENCHMARKS.md's.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-here=$(cd "$(dirname "$0")" && pwd)
-export LSAN_OPTIONS="suppressions=$here/lsan-openmpi.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
-tmp=$(mktemp -d /tmp/gallop_bundle_agree_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+openmpi_sanitizers
+scratch bundle_agree
 scene=$here/../data/scenes/quad_bundle_gallop.ini
 set_=(--model full --set wind.speed=15 --set model.elements=42 --set simulation.duration=400)
 
@@ -54,5 +49,4 @@ echo "$res" | grep -v '^ok\|^bad'
 echo "$res" | grep -q '^ok' && ok "galloping: explicit within 10% of equivalent ($(echo "$res" | grep '^ok' | cut -c4-))" ||
     bad "galloping: $(echo "$res" | grep '^bad')"
 
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

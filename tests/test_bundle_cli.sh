@@ -10,15 +10,11 @@
 # saying equivalent is what runs.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
+. "$(dirname "$0")/lib.sh"
 # `gallop sweep` starts Open MPI: its own leaks under SAN=1 are suppressed as in test_sweep.sh
 # (tests/lsan-openmpi.supp, with the full unwinding that reaches libmpi's frames)
-export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/lsan-openmpi.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
-tmp=$(mktemp -d /tmp/gallop_bundle_cli_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+openmpi_sanitizers
+scratch bundle_cli
 
 sed 's/^model = equivalent/model = explicit/' data/scenes/quad_bundle_gallop.ini > "$tmp/quad.ini"
 sed -i 's#\.\./aero/#'"$PWD"'/data/aero/#' "$tmp/quad.ini"
@@ -126,5 +122,4 @@ grep -q '"model": "explicit"' "$tmp/full/summary.json" 2>/dev/null && grep -q '"
 grep -A3 '"leeward"' "$tmp/full/summary.json" | tr -d ' \n' | grep -q '"leeward":\[1\]' && ok "leeward 1" ||
     bad "leeward: $(grep -A3 '"leeward"' "$tmp/full/summary.json")"
 
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

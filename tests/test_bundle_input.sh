@@ -8,11 +8,8 @@
 # spacer_stiffness out of range or below 100 N/m (but 0) exits 2 naming it.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_bundle_input_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch bundle_input
 
 # a twin on 24 elements; line 12 is the [bundle] line under test
 scene() {
@@ -113,5 +110,4 @@ spacer_stiffness = 2.5e5" > "$tmp/flex.ini"
     "$GALLOP" check "$tmp/flex_chk.ini" > /dev/null 2>&1 && ! grep -q spacer_stiffness "$tmp/chk.ini" &&
     ok "check prints spacer_stiffness and reads it back" || bad "check: $(grep -A9 '^\[bundle' "$tmp/flex_chk.ini")"
 
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

@@ -7,11 +7,8 @@
 # linear analysis's least-damped mode at that speed and is within 10% of its Re(lambda).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_bundle_onset_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch bundle_onset
 sc=data/scenes/quad_bundle_gallop.ini
 set_=(--set bundle.model=explicit --set bundle.subconductors=2 --set model.elements=24 --set bundle.spacers=2)
 if "$GALLOP" stability $sc -o "$tmp/st" "${set_[@]}" --set stability.speed_min=1 --set stability.speed_max=6 \
@@ -38,5 +35,4 @@ for U in 1.5 5; do
         ok "at $U m/s: full-model growth $g 1/s, linear $l 1/s (same sign, within 10%)" ||
         bad "at $U m/s: full-model growth '$g' 1/s against linear '$l' 1/s"
 done
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

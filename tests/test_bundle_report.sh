@@ -5,12 +5,8 @@
 # and the figure is drawn when gnuplot is there.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-here=$(cd "$(dirname "$0")" && pwd)
-tmp=$(mktemp -d /tmp/gallop_bundle_report_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch bundle_report
 BUNDLE_DURATION=30 BUNDLE_SET="model.elements=24 stability.speed_min=2 stability.speed_max=5 stability.speed_step=0.25" \
     bash "$here/../notebooks-free-reports/bundle_report.sh" "$GALLOP" "$tmp" > "$tmp/log" 2>&1
 rc=$?
@@ -28,5 +24,4 @@ w=$(grep -m1 '"vertical_peak_to_peak_m"' "$tmp/bundle/explicit/full/summary.json
 if command -v gnuplot > /dev/null; then
     [ -s "$tmp/bundle/fig/growth.png" ] && ok "fig/growth.png" || bad "no fig/growth.png: $(cat "$tmp/bundle/fig/gnuplot.log" 2>/dev/null)"
 fi
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

@@ -6,11 +6,8 @@
 # in summary.json), and bad input (exit 2, nothing written).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_accuracy_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_accuracy
 header='study,setting,value,error,wall_time_s,chosen'
 
 # ---- the elements study on the demo scene ----
@@ -105,5 +102,4 @@ rc=$?
   --study time_step -o "$tmp/f1" >/dev/null 2>"$tmp/err"
 rc=$?
 [ $rc -ne 0 ] && [ -s "$tmp/err" ] && ok "a run too short to measure: exit $rc with the reason" || bad "too short: exit $rc"
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

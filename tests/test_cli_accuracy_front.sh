@@ -10,12 +10,8 @@
 # report its own estimated error; --budget must stop the study early and say so.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_accfront_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
-here=$(cd "$(dirname "$0")" && pwd)
+. "$(dirname "$0")/lib.sh"
+scratch cli_accfront
 cp "$here/cli/taut_string.ini" "$tmp/string.ini"
 E=0.02
 if "$GALLOP" accuracy "$tmp/string.ini" --tolerance $E -o "$tmp/a" >"$tmp/out" 2>"$tmp/err"; then
@@ -111,5 +107,4 @@ for args in "--budget -1" "--seeds 0" "--levels 9" "--seeds 1.5"; do
   rc=$?
   [ $rc -eq 2 ] && [ -s "$tmp/err" ] && ok "bad input '$args': exit 2" || bad "'$args': exit $rc"
 done
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

@@ -12,12 +12,8 @@
 # basis reversed the order).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_accnewton_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
-here=$(cd "$(dirname "$0")" && pwd)
+. "$(dirname "$0")/lib.sh"
+scratch cli_accnewton
 # the taut string of tests/cli/taut_string.ini, 10 s
 sed 's/^duration = 30$/duration = 10/' "$here/cli/taut_string.ini" >"$tmp/s.ini"
 # ---- the range ----
@@ -70,5 +66,4 @@ for model in full reduced; do
   cmp -s "$tmp/$model-default/trace.csv" "$tmp/$model-1e-3/trace.csv" \
     && bad "$model: 1e-3 gives the default's trace: the key is not read" || ok "$model: 1e-3 changes the trace"
 done
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

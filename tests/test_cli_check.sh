@@ -3,11 +3,8 @@
 # back), on a bad scene (exit 2, FILE:LINE on stderr) and on bad arguments (exit 2).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_check_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_check
 
 # the shipped scene
 if "$GALLOP" check data/scenes/drake_300m.ini >"$tmp/out.ini" 2>"$tmp/err"; then
@@ -54,5 +51,4 @@ for args in "" "--bogus data/scenes/drake_300m.ini" "data/scenes/drake_300m.ini 
   if [ "$rc" -eq 2 ] && [ -s "$tmp/err" ]; then ok "check $args: exit 2"; else bad "check $args: exit $rc"; fi
 done
 
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

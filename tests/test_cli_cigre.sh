@@ -6,11 +6,8 @@
 # strength is its sub-conductors'.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_cigre_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_cigre
 cp data/scenes/iced_gallop.ini "$tmp/iced.ini"
 short=(--model reduced --set ice.aero_table="$PWD/data/aero/iced_d_shape.csv" --set model.elements=30
        --set simulation.duration=20)
@@ -50,5 +47,4 @@ if run quad --set bundle.subconductors=4 --set bundle.separation=0.457; then
         >/dev/null && ok "quad bundle: rated_strength_n = 4 x 138780 N" \
         || bad "quad: $(jq -c '[.support_tensions, .bundle]' "$tmp/quad/summary.json")"
 fi
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

@@ -6,11 +6,8 @@
 # is said to be on stderr. Mid-span alone (before) gave "vertical 2.71%" here, the quarter 35%.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_compare_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_compare
 
 "$GALLOP" compare data/scenes/crescent_condor.ini -o "$tmp/c" >"$tmp/out" 2>"$tmp/err"
 rc=$?
@@ -55,5 +52,4 @@ grep -q 'the full model is not steady over the window' "$tmp/err" && ok "stderr:
     bad "no warning of the unsteady reference: $(cat "$tmp/err")"
 grep -q '^  probe 0.25 ' "$tmp/out" && grep -q '^headline at' "$tmp/out" && ok "stdout: per probe figures" ||
     bad "stdout: $(cat "$tmp/out")"
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

@@ -5,11 +5,8 @@
 # command and option; bad usage exits 2 with the synopsis.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_help_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch help
 
 "$GALLOP" --help > "$tmp/help" 2>&1 && ok "gallop --help exits 0" || bad "gallop --help: exit $?"
 commands="modes simulate compare stability wind accuracy spectrum sweep check version"
@@ -48,5 +45,4 @@ for args in "modes" "modes a.ini b.ini" "modes --frobnicate x.ini" "simulate x.i
   [ $rc -eq 2 ] && grep -q 'usage' "$tmp/err" && ok "'gallop $args': exit 2 with the usage" \
     || bad "'gallop $args': exit $rc: $(head -2 "$tmp/err")"
 done
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

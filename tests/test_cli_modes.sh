@@ -4,11 +4,8 @@
 # no output written) and a span with no equilibrium (exit 1 with the reason).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_modes_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_modes
 
 if "$GALLOP" modes data/scenes/drake_300m.ini -o "$tmp/demo" >"$tmp/out" 2>"$tmp/err"; then
   ok "modes on the demo scene exits 0"
@@ -44,5 +41,4 @@ rc=$?
 # torsion off: no twist unknowns (dofs = 3 (elements - 1))
 "$GALLOP" modes data/scenes/drake_300m.ini --set effects.torsion=off --set model.elements=40 -o "$tmp/nt" >/dev/null 2>"$tmp/err"
 grep -q '"dofs": 117,' "$tmp/nt/summary.json" && ok "torsion off: 117 dofs for 40 elements" || bad "torsion off dofs: $(grep dofs "$tmp/nt/summary.json")"
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

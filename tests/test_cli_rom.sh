@@ -6,11 +6,8 @@
 # model's results when the reduced model fails, and says so.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_rom_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_rom
 scene=tests/rom/condor_150_taut_dshape.ini
 rom=(--set model.reduced=recomputed --set simulation.duration=30)
 
@@ -64,5 +61,4 @@ fi
 rc=$?
 if [ $rc -eq 2 ] && grep -q 'stop | warn' "$tmp/err"; then ok "model.on_invalid: unknown value refused"; else bad "on_invalid: exit $rc"; fi
 
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

@@ -7,11 +7,8 @@
 # spans within the issue's figures stay valid (test_cli_rom.sh, test_rom_spans).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_rom_cubic_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_rom_cubic
 scene=tests/rom/grosbeak_300_soft_gj.ini
 
 "$GALLOP" simulate "$scene" --model reduced -o "$tmp/a" >/dev/null 2>"$tmp/err"
@@ -28,5 +25,4 @@ if [ $rc -eq 0 ] && grep -q '"valid": false' "$tmp/b/summary.json"; then
 else
   bad "grosbeak, on_invalid = warn: exit $rc: $(cat "$tmp/err"; grep -o '"valid": [a-z]*' "$tmp/b/summary.json" 2>/dev/null)"
 fi
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

@@ -5,11 +5,8 @@
 # zero-damping case, the attack angle; the coupled onset (vg.csv, issue 15); a scene without an aero table: exit 2, nothing written.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_stability_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_stability
 cp data/scenes/iced_gallop.ini "$tmp/iced.ini"
 tab="--set ice.aero_table=$PWD/data/aero/iced_d_shape.csv"
 
@@ -124,5 +121,4 @@ rc=$?
 "$GALLOP" stability "$tmp/iced.ini" --set ice.aero_table=$tmp/none.csv -o "$tmp/bad" >/dev/null 2>"$tmp/err"
 rc=$?
 [ $rc -eq 2 ] && [ ! -e "$tmp/bad" ] && ok "missing table file: exit 2" || bad "missing table file: exit $rc: $(cat "$tmp/err")"
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

@@ -5,11 +5,8 @@
 # another field, --points, the other spectra; turbulence = none and bad --points: exit 2.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_cli_wind_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch cli_wind
 cp data/scenes/iced_gallop.ini "$tmp/iced.ini"
 set -- --set ice.aero_table="$PWD/data/aero/iced_d_shape.csv" --set wind.turbulence=kaimal \
        --set wind.intensity=0.15 --set wind.speed=12 --set simulation.duration=599
@@ -94,5 +91,4 @@ awk -F, -v sw="${sw:-0}" 'NR > 1 { s += $5; s2 += $5 * $5; n++ } END { m = s / n
 "$GALLOP" wind "$tmp/iced.ini" "$@" --set wind.vertical_turbulence=on --set effects.turbulence=off -o "$tmp/voff" >/dev/null 2>"$tmp/verr"
 grep -q "turbulence = off: simulations use neither the along-wind field nor the vertical one" "$tmp/verr" \
   && ok "effect off: the note on stderr" || bad "effect off: $(cat "$tmp/verr")"
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

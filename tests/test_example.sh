@@ -4,11 +4,8 @@
 # prints the frequencies `gallop modes` finds (the first horizontal and vertical modes).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_example_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch example
 
 awk '/^<!-- example: examples\/first_frequencies.c -->/ { on = 1; next }
      on && /^```c/ { inb = 1; next } inb && /^```/ { exit } inb { print }' README.md > "$tmp/readme.c"
@@ -30,5 +27,4 @@ for fam in horizontal vertical; do
   awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; exit !(a > 0 && (d < 0 ? -d : d) < 1e-6 * b) }' \
     && ok "first $fam frequency $a Hz = gallop modes $b Hz" || bad "first $fam: example $a Hz, gallop modes $b Hz"
 done
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

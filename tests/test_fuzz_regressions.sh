@@ -5,11 +5,8 @@
 # to `gallop check`. Each must give exit 0 or 2 with a message, never a crash or a hang.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_fuzzreg_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch fuzzreg
 printf '[span]\nlength = 200\nhorizontal_tension = 25000\n[conductor]\nname = Drake\n[ice]\nmass_per_length = 0.6\n' \
     >"$tmp/base.ini"
 n=0
@@ -29,5 +26,4 @@ for f in tests/fuzz/regressions/*; do
     fi
 done
 [ $n -gt 0 ] && ok "$n regression inputs" || bad "no inputs in tests/fuzz/regressions"
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

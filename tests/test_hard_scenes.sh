@@ -8,11 +8,8 @@
 # Run from the repository root (scenes name their conductor from data/conductors.csv).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_hard_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch hard
 H=tests/hard
 
 # Full-model runs: src/full/dynamics.c leaves the velocity of the clamped nodes in its Newton iterate
@@ -242,5 +239,4 @@ known_coarse_step() {
 }
 known_coarse_step
 
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

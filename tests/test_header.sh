@@ -6,11 +6,8 @@
 # directories are on the path (the Makefile's CPPFLAGS without -Isrc): no public header may need
 # a private one.
 set -u
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_header_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch header
 
 CC=${CC:-cc}
 CXX=${CXX:-g++}
@@ -72,5 +69,4 @@ else
     ok "gallop.h compiles as C++ ($CXX -pedantic -Werror), with C linkage"
 fi
 
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

@@ -5,12 +5,9 @@
 # builds the README's example (examples/first_frequencies.c), which agrees with `gallop modes`.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
+. "$(dirname "$0")/lib.sh"
 root=$PWD
-tmp=$(mktemp -d /tmp/gallop_install_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+scratch install
 prefix=$tmp/prefix
 
 unset MAKEFLAGS MFLAGS MAKELEVEL
@@ -55,5 +52,4 @@ if [ -x "$tmp/ff" ] && (cd "$tmp/elsewhere" && env -u GALLOP_DATA "$tmp/ff" scen
 else
   bad "installed example failed: $(cat "$tmp/elsewhere/ff.out" 2>/dev/null)"
 fi
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

@@ -8,11 +8,8 @@
 # Run from the repository root (scenes name their conductor from data/conductors.csv).
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_shipped_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+scratch shipped
 
 # json KEY FILE: the first value of "KEY": in FILE
 json() { grep -o "\"$1\": [^,}]*" "$2" | head -n 1 | sed 's/.*: //'; }
@@ -48,5 +45,4 @@ for scene in data/scenes/*.ini; do
 done
 if [ $n -ge 6 ]; then ok "$n shipped scenes run"; else bad "only $n shipped scenes found (run from the repository root)"; fi
 
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

@@ -5,12 +5,8 @@
 # is not resumed; --continuation runs up and then down the first key.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_sweep_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
-here=$(cd "$(dirname "$0")" && pwd)
+. "$(dirname "$0")/lib.sh"
+scratch sweep
 scene=$here/../data/scenes/iced_gallop.ini
 # small and short: 16 elements, 40 s of the full model per case
 small=(--model full --set model.elements=16 --set simulation.duration=40 --set model.modes_vertical=2
@@ -19,8 +15,7 @@ strip() { cut -d, -f1-"$(($(head -1 "$1" | tr ',' '\n' | wc -l) - 1))" "$1"; }  
 # Open MPI's own leaks under SAN=1 (tests/lsan-openmpi.supp). Its components are unloaded at
 # MPI_Finalize, so the frames of their allocations cannot be named: the full (slow) unwinding
 # reaches the frames of libmpi below them, which the suppressions name. gallop's leaks still count.
-export LSAN_OPTIONS="suppressions=$here/lsan-openmpi.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+openmpi_sanitizers
 
 # ---- bad input: exit 2, the key and the allowed range named ----
 expect2() {
@@ -118,5 +113,4 @@ awk -F, '$1 == 6 && $2 == "up" { u = $3 } $1 == 6 && $2 == "down" { d = $3 } $1 
          END { exit !(u < 0.01 && d > 0.3 && z < 0.01) }' "$tmp/hyst/sweep.csv" \
   && ok "hysteresis: 6 m/s still up, galloping down; 4 m/s still" || bad "hysteresis amplitudes"
 
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish

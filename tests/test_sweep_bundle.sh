@@ -7,14 +7,9 @@
 # sweep.csv has no sub-conductor columns.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-here=$(cd "$(dirname "$0")" && pwd)
-export LSAN_OPTIONS="suppressions=$here/lsan-openmpi.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
-tmp=$(mktemp -d /tmp/gallop_sweep_bundle_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib.sh"
+openmpi_sanitizers
+scratch sweep_bundle
 scene=$here/../data/scenes/quad_bundle_gallop.ini
 set_=(--set bundle.model=explicit --set model.elements=42 --set simulation.duration=30
       --set stability.speed_max=6 --set stability.speed_step=0.5)
@@ -79,5 +74,4 @@ rc=$?
 head -1 "$tmp/one/sweep.csv" 2>/dev/null | grep -q ',valid,wall_time_s$' && ok "single conductor: no _s columns" ||
     bad "single conductor header: $(head -1 "$tmp/one/sweep.csv" 2>/dev/null)"
 
-echo "#summary $pass $fail"
-[ "$fail" -eq 0 ]
+finish

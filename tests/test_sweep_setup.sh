@@ -10,15 +10,10 @@
 # reduced_setups_computed, reduced_setups_reused), its records still those of the cases alone.
 set -u
 : "${GALLOP:?GALLOP must hold the path of the gallop binary}"
-pass=0; fail=0
-ok()  { pass=$((pass + 1)); echo "  ok   $1"; }
-bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
-tmp=$(mktemp -d /tmp/gallop_sweep_setup_XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
-here=$(cd "$(dirname "$0")" && pwd)
+. "$(dirname "$0")/lib.sh"
+scratch sweep_setup
 scene=$here/../data/scenes/iced_gallop.ini
-export LSAN_OPTIONS="suppressions=$here/lsan-openmpi.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+openmpi_sanitizers
 small=(--set model.elements=40 --set simulation.duration=20 --set stability.speed_max=12)
 counts() { jq -r '[.computed, .setups_computed, .setups_reused, .damping_computed] | map(tostring) | join(" ")' \
              "$1/summary.json" 2>/dev/null; }
@@ -99,5 +94,4 @@ same_records "$tmp/damp" "$tmp/sdamp" && ok "dampings: every case as computed al
 awk -F, '$1 == 8 && $2 == 0.002 { a = $4 } $1 == 8 && $2 == 0.01 { b = $4 } END { exit !(b < a) }' \
   "$tmp/damp/sweep.csv" && ok "the higher ratio damps more" || bad "damping rows: $(cat "$tmp/damp/sweep.csv")"
 
-echo "#summary $pass $fail"
-[ $fail -eq 0 ]
+finish
