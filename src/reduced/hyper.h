@@ -82,4 +82,10 @@ int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr);
 int gal_rom_eval_internal(gal_rom *m, const double *x, double *f, double *Kr);
 int gal_rom_eval_external(gal_rom *m, double t, const double *x, const double *xd, double *f);
 
+/* o.scheme = GAL_ROM_SCHEME_GAUSS2 (rom_irk.c): one step of h (halved on failure); its workspace
+ * freed; its stages forgotten (a restart: the next predictor from the state's acceleration). */
+int gal_rom_irk_step(gal_rom *m, double h);
+void gal_rom_irk_free(gal_rom *m);
+void gal_rom_irk_restart(gal_rom *m);
+
 #endif

@@ -46,6 +46,7 @@ gal_rom *gal_rom_free(gal_rom *m)
     free(m->setup_sel);
     gal_rom_hyper_free(m);
     gal_rom_qm_free(m);
+    gal_rom_irk_free(m);
     free(m->fr); free(m->fe_prev);
     free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
     gal_csc_free(m->K0); gal_csc_free(m->K);

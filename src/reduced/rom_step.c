@@ -64,6 +64,7 @@ int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r;
     m->t = t;
+    gal_rom_irk_restart(m);
     m->hJ = 0, m->hfe = 0, m->lin_ok = 0, m->next_hyper_check = t + gal_rom_check_interval(m, m->o.hyper_check_interval);
     /* x = V^T M (q - q_eq), x' = V^T M v (on the manifold: the closest state on it) */
     if (m->qm) {
@@ -340,7 +341,7 @@ double gal_rom_check_interval(const gal_rom *m, double base_s)
 int gal_rom_step(gal_rom *m)
 {
     double t1 = m->t + m->o.h;
-    int st = step(m, m->o.h, 0);
+    int st = m->o.scheme != GAL_ROM_SCHEME_GALPHA ? gal_rom_irk_step(m, m->o.h) : step(m, m->o.h, 0);
     if (st) return gal_error(st, "at t = %.6g s (after %d step halvings): %s", t1, GAL_ROM_HALVINGS, gal_error_message());
     /* the sample against the exact projected forces every hyper_check_interval */
     if (m->hyper && m->o.hyper_check_interval > 0 && m->t >= m->next_hyper_check - 1e-3 * m->o.h) {

@@ -81,6 +81,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     gal_rom_default_opts(&ro);
     ro.h = dt_out / sub;
     ro.rho_inf = o->rho_inf;
+    ro.scheme = o->rom_scheme;
     if (o->newton_tol > 0) ro.newton_tol = o->newton_tol;
     ro.damping = d->damping; /* the structural damping of the pipeline */
     ro.hyper_check_interval = 0; /* the sample's check comes with the self-check (rom_advance) */

@@ -18,6 +18,7 @@ void gal_sim_result_clear(gal_sim_result *res)
 
 void gal_run_opts_from_scene(const gal_scene *sc, gal_run_opts *o)
 {
+    memset(o, 0, sizeof *o);
     o->duration = sc->simulation.duration;
     o->time_step = sc->simulation.time_step;
     o->output_interval = sc->simulation.output_interval;

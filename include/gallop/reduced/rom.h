@@ -34,6 +34,11 @@ extern "C" {
 #define GAL_NEWTON_TOL_STRICT 1e-8
 #endif
 
+/* The reduced model's time integration: generalized-alpha (rom_step.c), or the two-stage
+ * Gauss-Legendre method (rom_irk.c: fourth order, A-stable, symplectic), or Alexander's L-stable
+ * three-stage SDIRK method (rom_irk.c: third order); the last two a linear basis only */
+enum { GAL_ROM_SCHEME_GALPHA = 0, GAL_ROM_SCHEME_GAUSS2 = 1, GAL_ROM_SCHEME_SDIRK3 = 2 };
+
 typedef struct gal_rom_opts {
     int derivatives;        /* 1: add the static modal derivatives (default); 0: linear modes only */
     int manifold;           /* 1: the modal derivatives as the quadratic term of a manifold
@@ -59,6 +64,7 @@ typedef struct gal_rom_opts {
     const gal_damping *damping; /* the full model's structural damping C (not owned; NULL: none) */
     double newton_tol;      /* relative; default 1e-8 */
     int max_newton;         /* per step; default 20 */
+    int scheme;             /* GAL_ROM_SCHEME_*: GALPHA (default), GAUSS2 or SDIRK3 (rom_irk.c) */
     /* hyper-reduction (ecsw.h) */
     int hyper;              /* 1: sampled, weighted elements (default); 0: every element */
     int hyper_loads;        /* 1: the aerodynamic loads on a sample too (default); 0: on every element */
@@ -174,6 +180,7 @@ typedef struct gal_rom {
     double check_floor[GAL_FAMILY_COUNT]; /* the self-check's scale floors (rom_check.c), computed
                              * once: they depend on the equilibrium, K0 and the masses alone */
     int check_floor_set;    /* 1: check_floor holds them */
+    struct gal_rom_irk *irk; /* o.scheme GAL_ROM_SCHEME_GAUSS2's workspace (rom_irk.c), or NULL */
 } gal_rom;
 
 void gal_rom_default_opts(gal_rom_opts *o);

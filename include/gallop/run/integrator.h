@@ -26,6 +26,7 @@ typedef struct gal_run_opts {
     double output_interval;  /* s; 0: chosen */
     double rho_inf;          /* -, full model's numerical dissipation (1 = none) */
     double newton_tol;       /* -, both models' Newton tolerance (dynamics.h, rom.h); <= 0: 1e-8 */
+    int rom_scheme;          /* the reduced model's step (rom.h GAL_ROM_SCHEME_*; 0 generalized-alpha) */
 } gal_run_opts;
 
 /* What an integrator counts. */
