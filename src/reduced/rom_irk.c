@@ -29,7 +29,7 @@ void dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a, 
 struct gal_rom_irk {
     int r;
     double hJ, hA;                 /* s: the step of J (0: none), of the stages held in A (0: none) */
-    double *A, *Q, *V, *F, *E, *G; /* 3 r each (Gauss: 2 r used): stage accelerations, states, rates, forces, residual */
+    double *A, *Q, *V, *F, *E, *G; /* 2 r each: stage accelerations, states, rates, forces, residual */
     double *J, *K, *K2;            /* 2r x 2r, r x r, r x r */
     int *piv;
 };
@@ -59,9 +59,9 @@ static int irk_alloc(gal_rom *m)
     if (!w) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
     m->irk = w;
     w->r = r;
-    size_t n2 = 2 * (size_t)r, n3 = 3 * (size_t)r;
-    w->A = malloc(n3 * sizeof(double)), w->Q = malloc(n3 * sizeof(double)), w->V = malloc(n3 * sizeof(double));
-    w->F = malloc(n3 * sizeof(double)), w->E = malloc(n3 * sizeof(double)), w->G = malloc(n3 * sizeof(double));
+    size_t n2 = 2 * (size_t)r;
+    w->A = malloc(n2 * sizeof(double)), w->Q = malloc(n2 * sizeof(double)), w->V = malloc(n2 * sizeof(double));
+    w->F = malloc(n2 * sizeof(double)), w->E = malloc(n2 * sizeof(double)), w->G = malloc(n2 * sizeof(double));
     w->J = malloc(n2 * n2 * sizeof(double)), w->K = malloc((size_t)r * r * sizeof(double));
     w->K2 = malloc((size_t)r * r * sizeof(double)), w->piv = malloc(n2 * sizeof(int));
     if (!w->A || !w->Q || !w->V || !w->F || !w->E || !w->G || !w->J || !w->K || !w->K2 || !w->piv) {
@@ -148,7 +148,7 @@ static void predict(gal_rom *m, struct gal_rom_irk *w, double h)
     }
 }
 
-/* Simplified Newton for one step of h; the state unchanged (w->A the stages) */
+/* Modified Newton for one step of h; the state unchanged (w->A the stages) */
 static int newton(gal_rom *m, struct gal_rom_irk *w, double h)
 {
     int r = m->r, st = GAL_OK, conv = 0, it;
@@ -213,141 +213,12 @@ static int step(gal_rom *m, double h, int depth)
     return GAL_OK;
 }
 
-/* The L-stable three-stage SDIRK method of order 3 (Alexander 1977; o.scheme = GAL_ROM_SCHEME_SDIRK3),
- * stiffly accurate (x1, v1 the last stage's): the stages solved in turn, each by modified Newton
- * on I + gamma h Cr + (gamma h)^2 Kr (one r x r matrix for every stage, kept over steps while
- * Newton contracts), which damps the unresolved stiff directions. */
-#define DG 0.43586652150845899942
-static const double dc[3] = {DG, 0.5 * (1 + DG), 1};
-static const double da[3][3] = {{DG, 0, 0},
-                                {0.5 * (1 - DG), DG, 0},
-                                {-0.25 * (6 * DG * DG - 16 * DG + 1), 0.25 * (6 * DG * DG - 20 * DG + 5), DG}};
-
-/* (a^2)_ij */
-static double da2(int i, int j)
-{
-    double s = 0;
-    for (int k = 0; k < 3; k++) s += da[i][k] * da[k][j];
-    return s;
-}
-
-/* J = I + gamma h Cr + (gamma h)^2 K, LU-factored (the plain LU: r x r) */
-static int dirk_factor(gal_rom *m, struct gal_rom_irk *w, double h)
-{
-    int r = m->r;
-    for (int k = 0; k < r * r; k++) w->J[k] = DG * h * m->Cr[k] + DG * DG * h * h * w->K[k];
-    for (int k = 0; k < r; k++) w->J[k * r + k] += 1;
-    w->hJ = 0;
-    if (gal_dense_lu_factor(w->J, r, w->piv)) return gal_error(GAL_EFAIL, "reduced model: singular SDIRK iteration matrix");
-    w->hJ = h;
-    m->tangents++;
-    return GAL_OK;
-}
-
-/* Stage i's residual at its acceleration A_i (the earlier stages' held); the loads when `loads` */
-static int dirk_residual(gal_rom *m, struct gal_rom_irk *w, double h, int i, int fresh, int loads, double *rn,
-                         double *rs, double *raw)
-{
-    int r = m->r, st;
-    double *Q = w->Q + i * r, *V = w->V + i * r, *F = w->F + i * r, *E = w->E + i * r;
-    for (int k = 0; k < r; k++) {
-        double sv = 0, sq = 0;
-        for (int j = 0; j <= i; j++) sv += da[i][j] * w->A[j * r + k], sq += da2(i, j) * w->A[j * r + k];
-        V[k] = m->v[k] + h * sv, Q[k] = m->x[k] + h * dc[i] * m->v[k] + h * h * sq;
-    }
-    if ((st = gal_rom_eval_internal(m, Q, F, fresh ? w->K : NULL))) return st;
-    if (!m->force.eval) memset(E, 0, (size_t)r * sizeof(double));
-    else if (loads && (st = gal_rom_eval_external(m, m->t + dc[i] * h, Q, V, E))) return st;
-    double mx = 0, sc = 0;
-    for (int k = 0; k < r; k++) {
-        double c = 0;
-        const double *cr = m->Cr + (size_t)k * r;
-        for (int j = 0; j < r; j++) c += cr[j] * V[j];
-        double g = w->A[i * r + k] + c + F[k] - E[k];
-        w->G[k] = g;
-        mx = fmax(mx, fabs(g)), sc = fmax(sc, fabs(F[k]) + fabs(E[k]));
-    }
-    double tol = m->o.newton_tol, ts = fmin(tol, GAL_NEWTON_TOL_STRICT);
-    *raw = mx, *rs = mx / fmax(ts * fmax(sc, m->fscale), m->ffloor), *rn = mx / fmax(tol * fmax(sc, m->fscale), m->ffloor);
-    return isfinite(mx) ? GAL_OK : gal_error(GAL_EFAIL, "reduced model: the residual is not finite");
-}
-
-/* Newton on stage i (the loads at every pass); its predictor extrapolated linearly in time from
- * the two latest known stages (tp, Ap: the previous one, tq, Aq: the one before) */
-static int dirk_stage(gal_rom *m, struct gal_rom_irk *w, double h, int i, const double *Ap, const double *Aq,
-                      double tp, double tq)
-{
-    int r = m->r, st = GAL_OK, conv = 0, it;
-    int fresh = !(m->o.reuse_tangent && w->hJ == h), kept = !fresh;
-    double prev = INFINITY, rawprev = INFINITY, ti = dc[i] * h, e = (ti - tp) / (tp - tq);
-    for (int k = 0; k < r; k++) {
-        w->A[i * r + k] = Ap[k] + e * (Ap[k] - Aq[k]);
-    }
-    for (it = 0; it < m->o.max_newton; it++) {
-        double rn, rs, raw;
-        if ((st = dirk_residual(m, w, h, i, fresh, 1, &rn, &rs, &raw))) break;
-        if (rs <= 1 || (it > 0 && rn <= 1 && raw < rawprev)) { conv = 1; break; }
-        if (!fresh && (rn > m->o.newton_contraction * prev || (kept && it >= m->o.newton_kept_max))) {
-            fresh = 1, kept = 0;
-            if ((st = dirk_residual(m, w, h, i, 1, 0, &rn, &rs, &raw))) break;
-        }
-        prev = rn, rawprev = raw;
-        if (fresh) {
-            if ((st = dirk_factor(m, w, h))) break;
-            fresh = 0;
-        }
-        for (int k = 0; k < r; k++) w->G[k] = -w->G[k];
-        gal_dense_lu_solve(w->J, r, w->piv, w->G);
-        for (int k = 0; k < r; k++) w->A[i * r + k] += w->G[k];
-        m->newton_iterations++;
-    }
-    if (!st && !conv)
-        st = gal_error(GAL_EFAIL, "reduced model: SDIRK Newton did not converge in %d iterations at t = %.6g s "
-                       "(time step %g s)", m->o.max_newton, m->t + h, h);
-    return st;
-}
-
-/* One SDIRK step of h (halved on failure). The stage predictors (dirk_stage) from the two latest
- * known stages: stage 1 from the previous step's last two (held in A + r and A + 2 r, at times
- * -h (1 - c_2) and 0: overwritten only by stages 2 and 3), stage 2 from stage 1 and the previous
- * step's last, stage 3 from stages 1 and 2; after a start or a halving (w->hA != h), the state's
- * acceleration (constant). */
-static int dirk(gal_rom *m, double h, int depth)
-{
-    struct gal_rom_irk *w = m->irk;
-    int r = m->r, st = GAL_OK;
-    size_t rb = (size_t)r * sizeof(double);
-    if (w->hA != h)
-        for (int i = 1; i < 3; i++) memcpy(w->A + i * r, m->a, rb);
-    double *A = w->A;
-    st = dirk_stage(m, w, h, 0, A + 2 * r, A + r, 0, -h * (1 - dc[1]));
-    if (!st) st = dirk_stage(m, w, h, 1, A, A + 2 * r, dc[0] * h, 0);
-    if (!st) st = dirk_stage(m, w, h, 2, A + r, A, dc[1] * h, dc[0] * h);
-    if (st && st != GAL_ENOMEM && depth < GAL_ROM_HALVINGS) {
-        m->halvings++;
-        w->hA = 0;
-        st = dirk(m, 0.5 * h, depth + 1);
-        if (!st) st = dirk(m, 0.5 * h, depth + 1);
-        w->hA = 0;
-        return st;
-    }
-    if (st) return st;
-    memcpy(m->x, w->Q + 2 * r, rb), memcpy(m->v, w->V + 2 * r, rb), memcpy(m->a, A + 2 * r, rb);
-    memcpy(m->fi, w->F + 2 * r, rb), memcpy(m->fe, w->E + 2 * r, rb);
-    w->hA = h;
-    m->hfe = 0, m->hJ = 0, m->lin_ok = 0;
-    m->t += h;
-    m->steps++;
-    return GAL_OK;
-}
-
-
 int gal_rom_irk_step(gal_rom *m, double h)
 {
     int st = irk_alloc(m);
     if (st) return st;
-    if (m->qm) return gal_error(GAL_EINPUT, "reduced model: the implicit Runge-Kutta steps have no quadratic manifold");
-    return m->o.scheme == GAL_ROM_SCHEME_SDIRK3 ? dirk(m, h, 0) : step(m, h, 0);
+    if (m->qm) return gal_error(GAL_EINPUT, "reduced model: the Gauss-Legendre step has no quadratic manifold");
+    return step(m, h, 0);
 }
 
 void gal_rom_irk_restart(gal_rom *m)

@@ -39,7 +39,7 @@ static double rel(double a, double b) { return fabs(a - b) / fabs(b) * 100; }
 /* "g8" / "G2": the scheme and the sub */
 static int spec(const char *s, int *scheme, int *sub)
 {
-    *scheme = s[0] == 'G' ? 1 : s[0] == 'S' ? 2 : 0;
+    *scheme = s[0] == 'G' ? 1 : 0;
     *sub = atoi(s + 1);
     return *sub > 0 ? 0 : 1;
 }

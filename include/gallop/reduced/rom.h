@@ -35,9 +35,9 @@ extern "C" {
 #endif
 
 /* The reduced model's time integration: generalized-alpha (rom_step.c), or the two-stage
- * Gauss-Legendre method (rom_irk.c: fourth order, A-stable, symplectic), or Alexander's L-stable
- * three-stage SDIRK method (rom_irk.c: third order); the last two a linear basis only */
-enum { GAL_ROM_SCHEME_GALPHA = 0, GAL_ROM_SCHEME_GAUSS2 = 1, GAL_ROM_SCHEME_SDIRK3 = 2 };
+ * Gauss-Legendre method (rom_irk.c: fourth order, A-stable, symplectic; a linear basis only; opt-in:
+ * measured no faster at equal error, BENCHMARKS.md, issue 13, helper step10) */
+enum { GAL_ROM_SCHEME_GALPHA = 0, GAL_ROM_SCHEME_GAUSS2 = 1 };
 
 typedef struct gal_rom_opts {
     int derivatives;        /* 1: add the static modal derivatives (default); 0: linear modes only */
@@ -64,7 +64,7 @@ typedef struct gal_rom_opts {
     const gal_damping *damping; /* the full model's structural damping C (not owned; NULL: none) */
     double newton_tol;      /* relative; default 1e-8 */
     int max_newton;         /* per step; default 20 */
-    int scheme;             /* GAL_ROM_SCHEME_*: GALPHA (default), GAUSS2 or SDIRK3 (rom_irk.c) */
+    int scheme;             /* GAL_ROM_SCHEME_GALPHA (default) or GAL_ROM_SCHEME_GAUSS2 (rom_irk.c) */
     /* hyper-reduction (ecsw.h) */
     int hyper;              /* 1: sampled, weighted elements (default); 0: every element */
     int hyper_loads;        /* 1: the aerodynamic loads on a sample too (default); 0: on every element */
