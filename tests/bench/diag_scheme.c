@@ -97,8 +97,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "diag_scheme: %s\n", gal_error_message());
         return 1;
     }
-    figs fR, f;
+    figs fR, f, fF;
     figures(&R, &cref, &fR);
+    figures(&full, &cref, &fF);
     printf("%s: dt_out %.5g s; full %.4f ms/s; reference %s (%.4f ms/s, basis %d->%d): f %.4f v %.4f h %.4f twist %.2f "
            "T %.0f; window from %.1f s; RMS over [%g, %g] s\n", argv[1], dt_out, cpu_full / T * 1e3, refs, cpu / T * 1e3,
            R.basis_start, R.basis, fR.f, fR.v, fR.h, fR.tw, fR.T, cref.from, t0, t1);
@@ -117,6 +118,8 @@ int main(int argc, char **argv)
                cpu / T * 1e3, cpu_full / cpu, (double)r.newton_iterations / r.steps, (double)r.factorizations / r.steps, r.basis_start, r.basis, r.valid,
                e[0], e[1], e[2], rel(f.f, fR.f), rel(f.v, fR.v), rel(f.h, fR.h), rel(f.tw, fR.tw), fabs(f.tw - fR.tw),
                rel(f.T, fR.T));
+        printf("      vs full: f %.3f%% v %.2f%% h %.2f%% tw %.2f%% T %.2f%%\n",
+               rel(f.f, fF.f), rel(f.v, fF.v), rel(f.h, fF.h), rel(f.tw, fF.tw), rel(f.T, fF.T));
         fflush(stdout);
         gal_sim_result_clear(&r);
     }
