@@ -120,6 +120,28 @@ void gal_damping_apply(const gal_damping *c, const double *v, double *y)
     }
 }
 
+/* B[a' nb + k'] = (M phi_k')^T phi_a' for the band modes k' = k..k+3 and the basis columns
+ * a' = a, a + 1 (those that exist): eight dots at once, each summed in order (the round-off of one
+ * at a time). */
+static void dots4x2(const gal_damping *c, const double *phi, int a, int nbasis, int k, double *B)
+{
+    int n = c->ndof, nb = c->nb, ka = nb - k < 4 ? nb - k : 4, na = nbasis - a < 2 ? nbasis - a : 2;
+    const double *p0 = phi + (size_t)a * n, *p1 = na > 1 ? p0 + n : p0;
+    const double *m0 = c->mphi + (size_t)k * n, *m1 = ka > 1 ? m0 + n : m0, *m2 = ka > 2 ? m0 + 2 * n : m0,
+                 *m3 = ka > 3 ? m0 + 3 * n : m0;
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0, t0 = 0, t1 = 0, t2 = 0, t3 = 0;
+    for (int j = 0; j < n; j++) {
+        double x = p0[j], y = p1[j];
+        s0 += m0[j] * x, s1 += m1[j] * x, s2 += m2[j] * x, s3 += m3[j] * x;
+        t0 += m0[j] * y, t1 += m1[j] * y, t2 += m2[j] * y, t3 += m3[j] * y;
+    }
+    double s[4] = {s0, s1, s2, s3}, t[4] = {t0, t1, t2, t3};
+    for (int i = 0; i < ka; i++) {
+        B[(size_t)a * nb + k + i] = s[i];
+        if (na > 1) B[(size_t)(a + 1) * nb + k + i] = t[i];
+    }
+}
+
 int gal_damping_project(const gal_damping *c, const double *phi, int nbasis, double *P)
 {
     int n = c->ndof;
@@ -128,15 +150,8 @@ int gal_damping_project(const gal_damping *c, const double *phi, int nbasis, dou
         /* P = B^T D B with B = Mphi_b^T Phi (nb x nbasis) */
         double *B = malloc((size_t)c->nb * nbasis * sizeof(double));
         if (!B) return gal_error(GAL_ENOMEM, "damping: out of memory");
-        for (int a = 0; a < nbasis; a++)
-            for (int k = 0; k < c->nb; k++) { /* two dots at a time, each in order */
-                const double *m = c->mphi + (size_t)k * n, *m1 = m + n, *pa = phi + (size_t)a * n;
-                double s = 0, s1 = 0;
-                if (k + 1 < c->nb) for (int j = 0; j < n; j++) s += m[j] * pa[j], s1 += m1[j] * pa[j];
-                else for (int j = 0; j < n; j++) s += m[j] * pa[j];
-                B[(size_t)a * c->nb + k] = s;
-                if (k + 1 < c->nb) B[(size_t)a * c->nb + ++k] = s1;
-            }
+        for (int a = 0; a < nbasis; a += 2)
+            for (int k = 0; k < c->nb; k += 4) dots4x2(c, phi, a, nbasis, k, B);
         for (int a = 0; a < nbasis; a++)
             for (int b = 0; b < nbasis; b++) {
                 double s = 0;

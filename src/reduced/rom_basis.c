@@ -208,14 +208,14 @@ void gal_rom_project_tangent(const gal_rom *m, const gal_csc *K, double *Kr, dou
     }
 }
 
-/* K0r = V^T K0 V at the set-up: the r products K0 v_j, then one dgemm (the upper triangle kept and
- * mirrored: exactly symmetric). */
+/* K0r = V^T K0 V at the set-up: the r products K0 v_j in one pass over K0 (each as gal_csc_symv
+ * sums it), then one dgemm (the upper triangle kept and mirrored: exactly symmetric). */
 static int project_K0(gal_rom *m)
 {
     int n = m->ndof, r = m->r;
     double one = 1, zero = 0, *KV = malloc((size_t)n * r * sizeof(double));
     if (!KV) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
-    for (int j = 0; j < r; j++) gal_csc_symv(m->K0, m->V + (size_t)j * n, KV + (size_t)j * n);
+    symv_multi(m->K0, m->K0->val, m->V, r, KV);
     dgemm_("T", "N", &r, &r, &n, &one, m->V, &n, KV, &n, &zero, m->K0r, &r);
     for (int j = 0; j < r; j++)
         for (int i = 0; i < j; i++) m->K0r[i * r + j] = m->K0r[j * r + i];
