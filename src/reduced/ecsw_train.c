@@ -283,20 +283,26 @@ static int nonlinear_part(gal_rom *m, int set, const int *cand, int nc, int all,
     int r = m->r, rows = h->ns * r;
     double *col = m->fr;
     if (set == 0) {
+        int *jz = malloc((size_t)r * sizeof(int));
+        if (!jz) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
         gal_rom_reconstruct_at(m, NULL, NULL);
         for (int c = 0; c < nc; c++) {
             int st = gal_rom_hyper_element_reduced(m, cand[c], col, h->Kc);
-            if (st) return st;
+            if (st) { free(jz); return st; }
             for (int s = 0; s < h->ns; s++) {
                 const double *x = h->snap + (size_t)s * (2 * r + 1);
                 double *a = A + (size_t)c * rows + (size_t)s * r;
+                int nz = 0; /* the state's nonzero coordinates: a zero one adds +-0 to kx, nothing */
+                for (int j = 0; j < r; j++)
+                    if (x[j] != 0) jz[nz++] = j;
                 for (int k = 0; k < r; k++) {
                     double kx = 0;
-                    for (int j = 0; j < r; j++) kx += h->Kc[k * r + j] * x[j];
+                    for (int z = 0; z < nz; z++) kx += h->Kc[k * r + jz[z]] * x[jz[z]];
                     a[k] -= col[k] + kx;
                 }
             }
         }
+        free(jz);
     }
     if (all) {
         memset(b, 0, (size_t)rows * sizeof(double));
