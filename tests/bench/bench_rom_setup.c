@@ -1,8 +1,13 @@
 /* bench_rom_setup.c: the reduced model's own set-up alone (gal_rom_alloc after statics and modes:
  * the basis, V^T K0 V, the samples, the damping, the start), CPU time of this process, median of 21
  * builds at 100 and at 1000 elements, the two meshes alternated (the machine is shared: run it
- * with OPENBLAS_NUM_THREADS=1, as the command line does). Usage: bench_rom_setup [SCENE]
- * (default tests/rom/drake_200_level_dshape.ini). Prints BENCH| lines (make bench). */
+ * with OPENBLAS_NUM_THREADS=1, as the command line does). Also the floor that the whole-mesh
+ * evaluations of the set-up put under the ratio: at 1000 elements it evaluates the rod's tangent
+ * 1 + 2 nsel times (K0 and the modal derivatives' central differences), and above 128 elements
+ * the rod's gradient and the loads once per training state each (the fits' targets); each kind
+ * timed alone here (median of 21), times its count, against the whole set-up at 100 elements.
+ * Usage: bench_rom_setup [SCENE] (default tests/rom/drake_200_level_dshape.ini). Prints BENCH|
+ * lines (make bench). */
 #include "gallop.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
@@ -73,6 +78,27 @@ static double once(mesh *M)
     return t;
 }
 
+/* Median CPU time of one whole-mesh evaluation of kind k (0: the rod's tangent, 1: its gradient,
+ * 2: the loads) at M's equilibrium, of 21. */
+static double whole(mesh *M, int k)
+{
+    const gal_data *dt = M->s.data;
+    const gal_rod *rod = dt->eq.rod;
+    gal_csc *K = gal_csc_clone(rod->K);
+    double *g = malloc((size_t)rod->nq * sizeof(double)), *v = calloc((size_t)rod->nq, sizeof(double)), t[21];
+    if (!K || !g || !v) exit(1);
+    for (int i = 0; i < 21; i++) {
+        double t0 = cpu();
+        if (k == 0) gal_rod_eval(rod, dt->eq.q, NULL, NULL, K);
+        else if (k == 1) gal_rod_eval(rod, dt->eq.q, NULL, g, NULL);
+        else memset(g, 0, (size_t)rod->nq * sizeof(double)), gal_loads_full((void *)&dt->loads, 10.0, dt->eq.q, v, g);
+        t[i] = cpu() - t0;
+    }
+    qsort(t, 21, sizeof(double), cmpd);
+    gal_csc_free(K), free(g), free(v);
+    return t[10];
+}
+
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "tests/rom/drake_200_level_dshape.ini";
@@ -89,5 +115,11 @@ int main(int argc, char **argv)
     printf("BENCH|reduced set-up alone at 1000 elements (CPU, median of %d)|%.2f|ms|%s|\n", R, 1e3 * tb[R / 2], path);
     printf("BENCH|reduced set-up alone, 1000 over 100 elements (target <= 3)|%.2f|x|%s|\n", tb[R / 2] / ta[R / 2],
            path);
+    int nt = 1 + 2 * b.r, ns = b.ro.hyper_snapshots, nl = b.F.element ? ns : 0;
+    double wk = whole(&b, 0), wg = whole(&b, 1), wl = b.F.eval ? whole(&b, 2) : 0, wf = nt * wk + ns * wg + nl * wl;
+    printf("whole-mesh evaluations at 1000 el: %d tangents x %.3f + %d gradients x %.3f + %d loads x %.3f = %.2f ms "
+           "= %.2f x the whole set-up at 100 el\n", nt, 1e3 * wk, ns, 1e3 * wg, nl, 1e3 * wl, 1e3 * wf, wf / ta[R / 2]);
+    printf("BENCH|reduced set-up: its whole-mesh evaluations alone at 1000 elements over the whole set-up at 100|%.2f|x|%s|\n",
+           wf / ta[R / 2], path);
     return 0;
 }
