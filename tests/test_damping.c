@@ -1,6 +1,7 @@
 /* test_damping.c: the structural damping as a property of the structure (issue 15): the stated
  * ratio at every mode of the band to round-off, none above it, the same matrix whatever modes a
- * scene selects; the Rayleigh kind gives its ratio at its two fitting frequencies. */
+ * scene selects; the Rayleigh kind gives its ratio at its two fitting frequencies; the modal kind's
+ * projection bit for bit as one dot at a time. */
 #include "check.h"
 #include "gallop.h"
 #include "gallop/model/damping.h"
@@ -55,6 +56,49 @@ static void test_modal_ratio_in_band(void)
     free(P);
     gal_modes_clear(&md);
     gal_damping_free(c);
+    gal_equilibrium_clear(&eq);
+}
+
+/* The modal kind's projection, its dots taken several at a time, equals one dot at a time summed in
+ * order, bit for bit, for every count of basis columns (odd and even) against the band's. */
+static void project_bitwise(const gal_equilibrium *eq, double band_hz)
+{
+    gal_damping *c = gal_damping_modal_alloc(eq->rod, eq->q, 0.003, band_hz);
+    gal_modes md;
+    CHECK(c && gal_modes_solve(eq->rod, eq->q, c->nb + 5, &md) == GAL_OK, "%s", gal_error_message());
+    if (!c) return;
+    int n = eq->rod->ndof, nt = c->nb + 5, same = 1;
+    double *P = malloc((size_t)nt * nt * sizeof(double)), *B = malloc((size_t)nt * c->nb * sizeof(double));
+    for (int nbasis = 1; nbasis <= nt; nbasis += nbasis < 4 ? 1 : nt - 4) {
+        CHECK(gal_damping_project(c, md.shape, nbasis, P) == GAL_OK, "project %d", nbasis);
+        for (int a = 0; a < nbasis; a++)
+            for (int k = 0; k < c->nb; k++) {
+                double s = 0;
+                for (int j = 0; j < n; j++) s += c->mphi[(size_t)k * n + j] * md.shape[(size_t)a * n + j];
+                B[a * c->nb + k] = s;
+            }
+        for (int a = 0; a < nbasis; a++)
+            for (int b = 0; b < nbasis; b++) {
+                double s = 0;
+                for (int k = 0; k < c->nb; k++) s += 2 * c->zeta * c->omega[k] * B[a * c->nb + k] * B[b * c->nb + k];
+                same &= P[(size_t)b * nbasis + a] == s;
+            }
+    }
+    printf("    (%d band modes; 1, 2, 3, 4 and %d basis columns)\n", c->nb, nt);
+    CHECK(same, "%d band modes: the projection differs from one dot at a time", c->nb);
+    free(P), free(B);
+    gal_modes_clear(&md);
+    gal_damping_free(c);
+}
+
+static void test_project_bitwise(void)
+{
+    const char *ov[] = {"model.elements=30"};
+    gal_equilibrium eq;
+    if (equilibrium(ov, 1, &eq)) return;
+    project_bitwise(&eq, 2.0);
+    project_bitwise(&eq, 1.75);
+    project_bitwise(&eq, 1.5);
     gal_equilibrium_clear(&eq);
 }
 
@@ -116,6 +160,7 @@ static void test_rayleigh(void)
 int main(void)
 {
     RUN(test_modal_ratio_in_band);
+    RUN(test_project_bitwise);
     RUN(test_selection_independent);
     RUN(test_rayleigh);
     return CHECK_SUMMARY();
