@@ -1,5 +1,6 @@
 /* rom_adapt.c: the reduced model's adaptation (rom_adapt.h): a larger basis after a failed
- * self-check, the model rebuilt on it by gal_rom_alloc and restarted from the reconstructed state. */
+ * self-check, the model rebuilt on it by gal_rom_alloc and run again from the run's start to the
+ * failing check's time (or, without a start, restarted from the reconstructed state). */
 #include "gallop/reduced/rom_adapt.h"
 #include "gallop/base/core.h"
 
@@ -72,6 +73,11 @@ int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, dou
     chk->max = 0;
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) chk->max = fmax(chk->max, chk->rel[f]);
     return GAL_OK;
+}
+
+void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double *v0)
+{
+    a->q0 = q0, a->v0 = v0;
 }
 
 void gal_rom_adapt_clear(gal_rom_adapt *a)
@@ -299,7 +305,11 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
     double *q = malloc((size_t)2 * a->rod->nq * sizeof(double));
     int st = nw && q ? GAL_OK : GAL_EFAIL;
     if (!q && nw) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
-    if (!st) {
+    if (!st && a->q0) { /* run again from the run's start: no restart transient (rom_adapt.h) */
+        st = gal_rom_start(nw, 0.0, a->q0, a->v0);
+        if (!st) st = gal_rom_advance(nw, old->t);
+        if (!st) a->replayed_s += old->t;
+    } else if (!st) {
         gal_rom_reconstruct(old, q, q + a->rod->nq);
         st = gal_rom_start(nw, old->t, q, q + a->rod->nq);
         if (!st && a->relax) st = relax(old, nw, q, q + a->rod->nq);

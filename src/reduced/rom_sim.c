@@ -19,6 +19,7 @@ void gal_rom_sim_default_opts(gal_rom_sim_opts *o)
     o->tolerance = -1; /* the scene's */
     o->policy = GAL_ROM_ADD_CORRECTION | GAL_ROM_ADD_MODE;
     o->relax = 1;
+    o->replay = 1;
 }
 
 /* One sample row (horizontal, vertical, along, twist per probe) and the support tensions. */
@@ -120,6 +121,7 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     free(fm);
     if (st) { gal_rom_adapt_clear(&a); return st; }
     a.policy = o->policy, a.relax = o->relax;
+    if (o->replay) gal_rom_adapt_replay_from(&a, d->q_start, NULL);
     st = gal_rom_start(m, 0.0, d->q_start, NULL);
     info->build_time_s = res->build_time_s = gal_wall_time() - tb;
     info->basis_start = m->r;

@@ -6,7 +6,8 @@
  * simulated time (less often past ~250 elements: gal_rom_check_interval keeps the checks' cost
  * within a share of the steps') against model.residual_tolerance: past it the basis grows (rom_adapt.h: the
  * residual's correction direction and the next mode of the family whose residual is largest, the
- * model rebuilt and restarted from the same rod state; logged in summary.json basis_growths);
+ * model rebuilt and run again from the run's start to the failing check's time, then on; logged in
+ * summary.json basis_growths);
  * when it cannot grow any more the run stops (model.on_invalid = stop) or goes on marked invalid
  * (warn). */
 #include "gallop/run/integrator.h"
@@ -107,6 +108,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
         rom_free(s);
         return st;
     }
+    gal_rom_adapt_replay_from(&s->adapt, d->q_start, d->v_start);
     s->basis_start = s->rom->r;
     s->setup_reused = s->setup_reused && s->rom->setup_reused;
     if ((st = gal_rom_start(s->rom, 0.0, d->q_start, d->v_start))) {
@@ -118,7 +120,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
 }
 
 /* The self-check at the state reached: past model.residual_tolerance the basis grows
- * (rom_adapt.h) and the run goes on from the same state; when it cannot grow, GAL_EFAIL naming
+ * (rom_adapt.h: the grown model run again from the start to this time) and the run goes on; when it cannot grow, GAL_EFAIL naming
  * what grew (model.on_invalid = stop) or the run goes on marked invalid (warn). */
 static int self_check(rom_state *s)
 {

@@ -2,8 +2,9 @@
  * (gal_rom_residual) passes the tolerance, the basis grows: the residual's own correction
  * direction du = K0^-1 R at the failing state and the next computed mode of the family whose
  * residual is largest (with its modal derivatives); a new gal_rom is allocated on the larger basis
- * (gal_rom_alloc, so that whatever it builds is rebuilt) and started from the old one's
- * reconstructed full state. Each growth is logged (time, basis, family, what was added). A family's
+ * (gal_rom_alloc, so that whatever it builds is rebuilt) and run again from the run's start to the
+ * time of the failing check (gal_rom_adapt_replay_from; the run's drivers do), or else started from
+ * the old one's reconstructed full state. Each growth is logged (time, basis, family, what was added). A family's
  * first growth adds the correction alone (a growth can move a resonant limit cycle: the smallest
  * change first); a later one, the correction has not sufficed, adds the mode too. */
 #ifndef GALLOP_ROM_ADAPT_H
@@ -50,6 +51,8 @@ typedef struct gal_rom_adapt {
     double amp[GAL_FAMILY_COUNT]; /* the largest mass norm of each family's displacement so far */
     double twist_floor;     /* the mass norm of a 1-deg twist, half-sine along the span */
     int corrected[GAL_FAMILY_COUNT]; /* growths of the family by a correction alone so far */
+    const double *q0, *v0; /* the run's start (gal_rom_adapt_replay_from), or NULL: restart in place */
+    double replayed_s;      /* s: simulated time run again by the growths so far */
     long cubic_checks;      /* checks past GAL_ROM_CUBIC_SETTLE_S so far (the cubic part every
                              * GAL_ROM_CUBIC_EVERY-th) */
 } gal_rom_adapt;
@@ -59,6 +62,16 @@ typedef struct gal_rom_adapt {
 int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const double *q_eq, const gal_modes *md,
                        const int *sel, int nsel, const gal_rom_opts *o, const gal_force *force);
 void gal_rom_adapt_clear(gal_rom_adapt *a);
+/* Grow by running the grown model again from the run's start (q0, v0: full configuration and
+ * velocity, nq each; v0 NULL: at rest; not copied, they must outlive a) to the failing check's
+ * time, without checks (that stretch was the old model's, checked; the grown model is checked from
+ * there on), instead of restarting it from the old model's state at that time. A restart in place
+ * starts the new directions off the new model's balance: it rang at its own frequencies (0.2 deg of
+ * twist at 6.4 Hz on data/scenes/iced_gallop.ini at 600 elements, read by the next check as 0.16
+ * and grown on again), and the ringing seeded a limit cycle 21-31% off in the twist that the same
+ * basis run from the start does not reach (BENCHMARKS.md, issue 13, helper growth). Costs the
+ * simulated time up to each growth once more (replayed_s). */
+void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double *v0);
 
 /* The self-check of *m (gal_rom_residual_dir) in the adaptation's norm: the translations as
  * there (each family against its own displacement, at least 2% of the whole motion's); the twist

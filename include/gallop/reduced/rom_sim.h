@@ -22,6 +22,8 @@ typedef struct gal_rom_sim_opts {
                                * the scene's model.residual_tolerance) */
     int policy;               /* GAL_ROM_ADD_* bits (default both) */
     int relax;                /* the new stiff directions start quasi-static (1, default) */
+    int replay;               /* a growth runs the grown model again from the start (1, default;
+                               * rom_adapt.h); 0: restarted in place */
     const double *extra;      /* ndof x nextra: vectors added to the initial basis (gal_rom_opts) */
     int nextra;
 } gal_rom_sim_opts;
