@@ -195,3 +195,66 @@ done:
     free(w);
     return st;
 }
+
+void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work,
+            const int *lwork, int *info);
+
+void gal_rom_band_clear(gal_rom_band *b)
+{
+    free(b->y);
+    memset(b, 0, sizeof *b);
+}
+
+int gal_rom_band_init(gal_rom *m, double band_hz, gal_rom_band *b)
+{
+    int r = m->r, n = m->ndof, lw = 64 * r, info = 0;
+    gal_rom_band_clear(b);
+    double *A = malloc(((size_t)r * r + r + lw + n) * sizeof(double));
+    b->y = malloc((size_t)r * (r + 1 + GAL_FAMILY_COUNT) * sizeof(double));
+    if (!A || !b->y) {
+        free(A);
+        gal_rom_band_clear(b);
+        return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    }
+    double *w = A + (size_t)r * r, *wk = w + r, *u = wk + lw;
+    memcpy(A, m->K0r, (size_t)r * r * sizeof(double));
+    dsyev_("V", "U", &r, A, &r, w, wk, &lw, &info);
+    if (info) {
+        free(A);
+        gal_rom_band_clear(b);
+        return gal_error(GAL_EFAIL, "reduced model: the reduced modes: dsyev failed (%d)", info);
+    }
+    int nh = 0; /* the reduced modes above the band, kept: shape y, omega^2, family shares */
+    for (int k = 0; k < r; k++) {
+        if (!(w[k] > 0) || sqrt(w[k]) / (2 * GAL_PI) <= band_hz) continue;
+        const double *y = A + (size_t)k * r;
+        double fam[GAL_FAMILY_COUNT] = {0}, tot = 0;
+        memset(u, 0, (size_t)n * sizeof(double));
+        for (int i = 0; i < r; i++)
+            for (int d = 0; d < n; d++) u[d] += y[i] * m->V[(size_t)i * n + d];
+        accumulate(m, u, u, m->rod->mdiag, fam);
+        for (int f = 0; f < GAL_FAMILY_COUNT; f++) tot += fam[f];
+        memcpy(b->y + (size_t)nh * r, y, (size_t)r * sizeof(double));
+        b->y[(size_t)r * r + nh] = w[k];
+        for (int f = 0; f < GAL_FAMILY_COUNT; f++)
+            b->y[(size_t)r * (r + 1) + (size_t)nh * GAL_FAMILY_COUNT + f] = tot > 0 ? fam[f] / tot : 0;
+        nh++;
+    }
+    b->r = r, b->n = nh;
+    b->w2 = b->y + (size_t)r * r, b->share = b->y + (size_t)r * (r + 1);
+    free(A);
+    return GAL_OK;
+}
+
+void gal_rom_band_amplitude(const gal_rom *m, const gal_rom_band *b, double amp[GAL_FAMILY_COUNT])
+{
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) amp[f] = 0;
+    for (int k = 0; k < b->n; k++) {
+        const double *y = b->y + (size_t)k * b->r;
+        double cd = 0, ca = 0;
+        for (int i = 0; i < b->r; i++) cd += y[i] * m->v[i], ca += y[i] * m->a[i];
+        double e = cd * cd / b->w2[k] + ca * ca / (b->w2[k] * b->w2[k]);
+        for (int f = 0; f < GAL_FAMILY_COUNT; f++) amp[f] += e * b->share[(size_t)k * GAL_FAMILY_COUNT + f];
+    }
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) amp[f] = sqrt(amp[f]);
+}

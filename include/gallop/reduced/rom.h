@@ -253,6 +253,29 @@ double gal_rom_element_tension(const gal_rom *m, int j);
 double gal_rom_energy(gal_rom *m);
 /* The full equations' residual at the reconstructed state (see gal_rom_check). */
 int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
+
+/* The reduced modes of (K0r, I) above a frequency band (rom_check.c): the basis's vectors there are
+ * Ritz approximations of modes the structural damping does not reach (damping.h: modal damping
+ * stops at its band), so an oscillation they carry rings undamped on a frequency that is a few
+ * tenths of a percent to percents off the rod's; data/scenes/iced_gallop.ini at 600 elements rings
+ * 1.6 deg of twist at 6.38 Hz where the full model has 5e-5 deg, and the residual does not see it.
+ * A diagnostic: not (yet) part of the self-check, whose refusal it cannot yet decide soundly
+ * (BENCHMARKS.md, issue 13, helper growth2: the reading on correct runs comes within 15% of the
+ * wrong one's). */
+typedef struct gal_rom_band {
+    int r, n;               /* basis size it was computed for; modes above the band */
+    double *y;              /* r x n: the modes' reduced shapes (owns the block) */
+    double *w2;             /* n: their (rad/s)^2 */
+    double *share;          /* n x GAL_FAMILY_COUNT: each mode's mass share per family */
+} gal_rom_band;
+/* Compute the modes of m above band_hz into b (cleared first). */
+int gal_rom_band_init(gal_rom *m, double band_hz, gal_rom_band *b);
+/* Per family, the mass norm of the ringing in those modes, from the state's velocity and
+ * acceleration, sqrt(sum_k ((y_k^T v)^2 / w_k^2 + (y_k^T a)^2 / w_k^4) share_kf): the displacement
+ * amplitude of a mode ringing at its frequency, at any phase; a quasi-static part at a frequency W
+ * reads W / w_k of its size. */
+void gal_rom_band_amplitude(const gal_rom *m, const gal_rom_band *b, double amp[GAL_FAMILY_COUNT]);
+void gal_rom_band_clear(gal_rom_band *b);
 /* The same, with the correcting displacement du = K0^-1 R over the free dofs into du (ndof; may
  * be NULL). */
 int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du);
