@@ -7,6 +7,7 @@
  * frequency (or its acceleration over the frequency squared, a quarter period on), split by
  * family. */
 #include "check.h"
+#include "sim_fixture.h"
 #include "gallop.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
@@ -70,15 +71,8 @@ static void test_band(void)
 {
     gal_scene sc;
     const char *ov[] = {"model.elements=100"};
-    if (gal_scene_load(&sc, "data/scenes/iced_gallop.ini", ov, 1, "data/conductors.csv")) {
-        CHECK(0, "%s", gal_error_message());
-        return;
-    }
     gal_sim_setup s;
-    if (gal_sim_setup_init(&s, &sc, 1)) {
-        CHECK(0, "%s", gal_error_message());
-        return;
-    }
+    if (sim_fixture(&sc, &s, "data/scenes/iced_gallop.ini", ov, 1)) return;
     CHECK(gal_forward(s.model, s.data, GAL_STAGE_REDUCED) == GAL_OK, "%s", gal_error_message());
     if (s.data->basis > 0) band_case(s.data);
     gal_sim_setup_clear(&s);

@@ -6,6 +6,7 @@
  * vibration of the sagged span of tests/rom_sagged.h (0.2 m at mid-span, as test_rom's) within
  * 1e-3 over 1000 periods at 10 steps a period of the highest selected mode (issue 13's figure). */
 #include "check.h"
+#include "sim_fixture.h"
 #include "gallop.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
@@ -28,10 +29,7 @@ static void test_order(void)
     const char *ov[] = {"simulation.duration=20"};
     gal_scene sc;
     gal_sim_setup s;
-    if (gal_scene_load(&sc, SCENE, ov, 1, "data/conductors.csv") || gal_sim_setup_init(&s, &sc, 1)) {
-        CHECK(0, "%s: %s", SCENE, gal_error_message());
-        return;
-    }
+    if (sim_fixture(&sc, &s, SCENE, ov, 1)) return;
     gal_run_opts o;
     gal_run_opts_from_scene(&sc, &o);
     gal_sim_result r[5] = {{0}}; /* Gauss at dt_out/1, /2, /4, /16; generalized-alpha at its default */

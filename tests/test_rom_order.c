@@ -11,6 +11,7 @@
  * the floor weighted per family, or the loads at every pass, the twist's order is 2.0-2.1
  * (BENCHMARKS.md, issue 13, helper order: not shipped, the self-check's basis growth moves with it). */
 #include "check.h"
+#include "sim_fixture.h"
 #include "gallop.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
@@ -23,10 +24,7 @@ static void test_order(void)
     const char *ov[] = {"simulation.duration=20"};
     gal_scene sc;
     gal_sim_setup s;
-    if (gal_scene_load(&sc, SCENE, ov, 1, "data/conductors.csv") || gal_sim_setup_init(&s, &sc, 1)) {
-        CHECK(0, "%s: %s", SCENE, gal_error_message());
-        return;
-    }
+    if (sim_fixture(&sc, &s, SCENE, ov, 1)) return;
     gal_run_opts o;
     gal_run_opts_from_scene(&sc, &o);
     gal_sim_result r[4] = {{0}}; /* 2h, h, h/2, h/8 */

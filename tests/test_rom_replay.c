@@ -8,6 +8,7 @@
  * check passing (BENCHMARKS.md, issue 13, helper growth). Run again from the start, the grown
  * model's next checks read ~0.005: one growth. */
 #include "check.h"
+#include "sim_fixture.h"
 #include "gallop.h"
 #include "gallop/reduced/rom_sim.h"
 #include "gallop/run/sim.h"
@@ -17,15 +18,8 @@ static void test_replay(void)
 {
     gal_scene sc;
     const char *ov[] = {"model.elements=600", "simulation.duration=9"};
-    if (gal_scene_load(&sc, "data/scenes/iced_gallop.ini", ov, 2, "data/conductors.csv")) {
-        CHECK(0, "%s", gal_error_message());
-        return;
-    }
     gal_sim_setup s;
-    if (gal_sim_setup_init(&s, &sc, 1)) {
-        CHECK(0, "%s", gal_error_message());
-        return;
-    }
+    if (sim_fixture(&sc, &s, "data/scenes/iced_gallop.ini", ov, 2)) return;
     double tol = sc.model.residual_tolerance;
     gal_rom_sim_info info[2];
     for (int replay = 0; replay < 2; replay++) {

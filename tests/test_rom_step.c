@@ -8,6 +8,7 @@
  * must leave that budget (the measure can see a coarse step; BENCHMARKS.md "The reduced model's
  * time step against its error": condor at 40 elements, 1.25% in frequency, 3% vertical, 22% twist). */
 #include "check.h"
+#include "sim_fixture.h"
 #include "gallop.h"
 #include "gallop/analysis/compare.h"
 #include "gallop/run/sim.h"
@@ -44,10 +45,7 @@ static void test_time_error_budget(void)
 {
     gal_scene sc;
     gal_sim_setup s;
-    if (gal_scene_load(&sc, SCENE, NULL, 0, "data/conductors.csv") || gal_sim_setup_init(&s, &sc, 1)) {
-        CHECK(0, "%s: %s", SCENE, gal_error_message());
-        return;
-    }
+    if (sim_fixture(&sc, &s, SCENE, NULL, 0)) return;
     gal_run_opts o;
     gal_run_opts_from_scene(&sc, &o);
     gal_sim_result r[3] = {{0}}; /* the default step h, h/4, 4 h */
