@@ -5,6 +5,11 @@
 # a file and printed whole, in the order given, so the log reads the same as a serial run.
 # FAIL_FAST=1 (make mutate) runs one at a time and stops at the first failing program.
 set -u
+# One BLAS thread, as the command line runs (src/cli/blas.c): the test programs then see the same
+# round-off as `gallop` on any machine, whatever its core count (reduced runs whose growth round-off
+# decides read differently with 2 threads: BENCHMARKS.md "The fine-mesh twist depends on the instant
+# of a late growth"), and two programs at once do not oversubscribe the cores.
+export OPENBLAS_NUM_THREADS=1
 passed=0; failed=0
 jobs=${TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
 [ -n "${FAIL_FAST:-}" ] && jobs=1
