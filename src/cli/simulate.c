@@ -32,7 +32,10 @@ static void print_run(const char *label, const gal_sim_result *r, const gal_sim_
 /* A reduced run that finished past its residual tolerance (model.on_invalid = warn) says so. */
 static void warn_invalid(const char *cmd, const gal_scene *sc, const gal_sim_result *r)
 {
-    if (r->checked && !r->valid)
+    if (r->checked && !r->valid && r->invalid_why[0])
+        fprintf(stderr, "gallop %s: warning: %s: its results are not checked (summary.json: valid: false)\n", cmd,
+                r->invalid_why);
+    else if (r->checked && !r->valid)
         fprintf(stderr, "gallop %s: warning: the reduced model's residual reached %.3g, past model.residual_tolerance "
                 "= %.3g: its results are not checked (summary.json: valid: false)\n", cmd, r->residual_max,
                 sc->model.residual_tolerance);

@@ -196,6 +196,26 @@ done:
     return st;
 }
 
+/* The tension of element j at the configuration q (all nq entries). */
+static double tension_at(const gal_rod *rod, const double *q, int j)
+{
+    double e[3];
+    for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
+    return rod->p.EA * (sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) / rod->l0[j] - 1);
+}
+
+double gal_rom_taut_share(const gal_rom *m)
+{
+    const gal_rod *rod = m->rod;
+    int end[2] = {0, rod->p.elements - 1};
+    double share = 1;
+    for (int k = 0; k < 2; k++) {
+        double t0 = tension_at(rod, m->q_eq, end[k]);
+        if (t0 > 0) share = fmin(share, gal_rom_element_tension(m, end[k]) / t0);
+    }
+    return share;
+}
+
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work,
             const int *lwork, int *info);
 

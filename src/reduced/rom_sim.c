@@ -1,6 +1,7 @@
 /* rom_sim.c: a run of a scene by the recomputed reduced model on the full model's set-up: the same
  * sampling, time step, Rayleigh damping, loads and probes as gal_sim_run, with the residual
- * self-check every check_interval seconds and the adaptation (rom_adapt.h) past the tolerance. */
+ * self-check every check_interval seconds and the adaptation (rom_adapt.h) past the tolerance; not
+ * valid either where the conductor goes slack (rom.h: gal_rom_taut_share). */
 #include "gallop/reduced/rom_sim.h"
 #include "gallop/base/core.h"
 
@@ -58,6 +59,7 @@ static int run_loop(gal_rom_adapt *a, gal_rom **m, const gal_rom_sim_opts *o, do
         for (int k = 0; k < sub && i > 0 && !st; k++) st = gal_rom_step(*m);
         if (st) break;
         sample(*m, res, i);
+        info->taut_share = fmin(info->taut_share, gal_rom_taut_share(*m));
         if (o->check_interval > 0 && (*m)->t >= next_check - 1e-9) {
             st = check(a, m, tol, info, du);
             next_check += gal_rom_check_interval(*m, o->check_interval);
@@ -126,11 +128,12 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     info->build_time_s = res->build_time_s = gal_wall_time() - tb;
     info->basis_start = m->r;
     info->valid = 1;
+    info->taut_share = 1;
     double tol = o->tolerance < 0 ? sc->model.residual_tolerance : o->tolerance;
     double t0 = gal_wall_time();
     if (!st) st = run_loop(&a, &m, o, tol, res, sub, info);
     info->basis = res->basis = m->r;
-    info->valid = !(tol > 0) || info->residual_max <= tol;
+    info->valid = (!(tol > 0) || info->residual_max <= tol) && info->taut_share >= GAL_ROM_SLACK_SHARE;
     info->nevents = a.nevents;
     memcpy(info->ev, a.ev, sizeof a.ev);
     gal_rom_adapt_clear(&a);

@@ -9,7 +9,9 @@
  * model rebuilt and run again from the run's start to the failing check's time, then on; logged in
  * summary.json basis_growths);
  * when it cannot grow any more the run stops (model.on_invalid = stop) or goes on marked invalid
- * (warn). */
+ * (warn). At every output the reconstructed conductor must also stay taut (gal_rom_taut_share at
+ * least GAL_ROM_SLACK_SHARE): a slack conductor is outside the basis, which no growth mends, and
+ * the run stops or goes on marked invalid the same way. */
 #include "gallop/run/integrator.h"
 #include "gallop/base/core.h"
 #include "gallop/reduced/rom_adapt.h"
@@ -34,6 +36,7 @@ typedef struct {
     double next_check, tol;
     int warn, checks, valid;
     double residual_max;
+    char why[256];          /* why the run is not valid, when not by its residual */
     gal_rom_check worst;
     int setup_reused;       /* the wind-independent set-up was the data's (an earlier run's) */
     double setup_time_s;    /* s: that set-up's wall time when this run made it */
@@ -149,6 +152,21 @@ static int self_check(rom_state *s)
                      s->tol, why, family_keys[f]);
 }
 
+/* The conductor at the state reached still taut (rom.h: gal_rom_taut_share), else the run is not
+ * valid: GAL_EFAIL saying so (model.on_invalid = stop), or marked (warn). */
+static int taut_check(rom_state *s)
+{
+    double share = gal_rom_taut_share(s->rom);
+    if (share >= GAL_ROM_SLACK_SHARE || !s->valid) return GAL_OK;
+    s->valid = 0;
+    snprintf(s->why, sizeof s->why, "the reduced conductor went slack at t = %.4g s (a support tension %.3g of its "
+             "static value, below %.2g): the reduced basis, built about the taut equilibrium, does not carry a slack "
+             "conductor (amplitudes and tensions no longer within ~5%%)", s->rom->t, share, GAL_ROM_SLACK_SHARE);
+    if (s->warn) return GAL_OK;
+    return gal_error(GAL_EFAIL, "%s: %s; run the full model (--model full), or set model.on_invalid = warn to finish "
+                     "the run marked invalid", s->m->sc.path, s->why);
+}
+
 /* The state at t_out, checked every CHECK_INTERVAL and at the end of the run (t_end). */
 static int rom_advance(void *state, double t_out, double t_end)
 {
@@ -159,6 +177,7 @@ static int rom_advance(void *state, double t_out, double t_end)
         snprintf(why, sizeof why, "%s", gal_error_message());
         return gal_error(st, "reduced model (basis %d): %s", s->rom->r, why);
     }
+    if ((st = taut_check(s))) return st;
     if (s->rom->t >= s->next_check - 1e-9 || t_out >= t_end) {
         /* the sample's check on the self-check's schedule (not at the start), at its state: the
          * self-check takes the whole rod's gradient and loads from it */
@@ -192,6 +211,7 @@ static void rom_counters(const void *state, gal_run_counters *c)
     c->build_time_s = r->build_time_s + s->setup_time_s;
     c->setup_reused = s->setup_reused;
     c->checked = s->checks > 0, c->residual_max = s->residual_max, c->valid = s->valid;
+    snprintf(c->invalid_why, sizeof c->invalid_why, "%s", s->why);
     c->basis_start = s->basis_start, c->growths = s->adapt.nevents;
     memcpy(c->growth, s->adapt.ev, sizeof s->adapt.ev);
 }

@@ -123,6 +123,7 @@ int gal_run_to_state(const gal_model *m, gal_data *d, const gal_integrator_type 
     res->force_evaluations = c.force_evaluations, res->rejected_steps = c.rejected_steps;
     res->basis = c.basis, res->build_time_s = c.build_time_s, res->setup_reused = c.setup_reused;
     res->checked = c.checked, res->residual_max = c.residual_max, res->valid = c.valid;
+    memcpy(res->invalid_why, c.invalid_why, sizeof c.invalid_why);
     res->basis_start = c.basis_start, res->growths = c.growths;
     memcpy(res->growth, c.growth, sizeof c.growth);
     if (!st && T->kind == GAL_MODEL_REDUCED && !res->checked) /* never a reduced result it has not checked */

@@ -289,6 +289,18 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du);
  * the manifold. */
 #define GAL_ROM_CUBIC_STEP 0.02
 int gal_rom_cubic(gal_rom *m, const double *eta, double err[GAL_FAMILY_COUNT]);
+/* How taut the reconstructed conductor still is: the lesser, over the two supports, of the support
+ * element's tension at the reduced state over its tension at the equilibrium (1 at rest, 0 slack,
+ * negative in compression; 1 when the equilibrium has no tension). The basis (modes and modal
+ * derivatives about the taut equilibrium) carries the stretch only near that tension: a conductor
+ * going slack is outside it, and the residual does not see it (the reduced equations are the full
+ * ones projected on the basis; BENCHMARKS.md, issue 13, helper turb, session 11). Below
+ * GAL_ROM_SLACK_SHARE a reduced run is not valid (integrator_rom.c, rom_sim.c): calibrated on
+ * tests/rom/, data/scenes/ and tests/hard/, whose runs within issue 13's figures keep 0.50 or more
+ * of the static tension, where every run of drake_300_turbulent and cardinal_500_sagged_stats
+ * (9-54% off, or refused) goes below 0; O(r). */
+#define GAL_ROM_SLACK_SHARE 0.1
+double gal_rom_taut_share(const gal_rom *m);
 /* The reduced internal force V^T grad U(q_eq + V x) (r entries). */
 int gal_rom_internal_force(gal_rom *m, const double *x, double *f);
 /* Kr = V^T K V (r x r) for a tangent K on the rod's pattern; work: ndof. */

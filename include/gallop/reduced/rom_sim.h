@@ -31,7 +31,8 @@ typedef struct gal_rom_sim_opts {
 typedef struct gal_rom_sim_info {
     int basis;                /* basis size */
     double residual_max;      /* the largest residual of the checks that did not grow the basis */
-    int valid;                /* residual_max within the tolerance */
+    int valid;                /* residual_max within the tolerance, and the conductor never slack */
+    double taut_share;        /* the least gal_rom_taut_share over the samples (rom.h) */
     int basis_start;          /* the initial basis size */
     int nevents;              /* growths of the basis */
     gal_rom_event ev[GAL_ROM_EVENTS_MAX];

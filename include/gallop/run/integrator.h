@@ -39,7 +39,9 @@ typedef struct gal_run_counters {
                               * (gal_data.rom_setup: a sweep over the wind) */
     int checked;             /* reduced: its self-check ran (then the two below) */
     double residual_max;     /* the largest relative residual it found */
-    int valid;               /* 1: residual_max within model.residual_tolerance */
+    int valid;               /* 1: residual_max within model.residual_tolerance (and the
+                              * reduced conductor never slack) */
+    char invalid_why[256];   /* not valid for another reason than the residual: which ("" if none) */
     int basis_start, growths;/* recomputed reduced model: its initial basis and how often it grew */
     gal_rom_event growth[GAL_ROM_EVENTS_MAX];
 } gal_run_counters;

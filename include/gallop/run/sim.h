@@ -32,6 +32,7 @@ typedef struct gal_sim_result {
     int checked;                   /* reduced: self-checked (residual_max, valid) */
     double residual_max;
     int valid;
+    char invalid_why[256];         /* not valid for another reason than the residual ("" if none) */
     int basis_start, growths;      /* recomputed reduced model: the initial basis, its growths */
     gal_rom_event growth[GAL_ROM_EVENTS_MAX];
 } gal_sim_result;
