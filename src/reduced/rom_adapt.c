@@ -300,7 +300,11 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
         return GAL_ROM_ELIMIT;
     }
     if (mode >= 0) a->sel[a->nsel++] = mode;
-    if (corr) memcpy(a->extra + (size_t)a->nextra++ * n, du, (size_t)n * sizeof(double));
+    if (corr && gal_rom_residual_family(old, du, (gal_family)f, a->extra + (size_t)a->nextra * n)) {
+        if (mode >= 0) a->nsel--;
+        return GAL_EFAIL;
+    }
+    if (corr) a->nextra++; /* the tripping family's correction alone (rom.h gal_rom_residual_family) */
     gal_rom *nw = build(a);
     double *q = malloc((size_t)2 * a->rod->nq * sizeof(double));
     int st = nw && q ? GAL_OK : GAL_EFAIL;

@@ -143,6 +143,32 @@ done:
     return st;
 }
 
+int gal_rom_residual_family(gal_rom *m, const double *du, gal_family f, double *df)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof;
+    double *R = malloc((size_t)n * sizeof(double));
+    if (!R) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the correction");
+    gal_csc_symv(m->K0, du, R); /* the residual again, R = K0 du */
+    for (int i = 0; i < rod->nn; i++) { /* each node's translation: its part along f's direction */
+        int d0 = node_dof(rod, i);
+        if (d0 < 0) continue;
+        double e[3][3], keep[3] = {0, 0, 0};
+        gal_rod_node_directions(rod, m->q_eq, i, e[2], e[1], e[0]); /* vertical, horizontal, axial */
+        int k = f == GAL_FAMILY_VERTICAL ? 0 : f == GAL_FAMILY_HORIZONTAL ? 1 : f == GAL_FAMILY_AXIAL ? 2 : -1;
+        if (k >= 0) {
+            double s = gal_dot3(e[k], R + d0);
+            for (int c = 0; c < 3; c++) keep[c] = s * e[k][c];
+        }
+        memcpy(R + d0, keep, sizeof keep);
+    }
+    for (int d = 0; d < n; d++) /* the twist, and whatever is neither a node's translation nor a twist */
+        if (rod->free_q[d] >= 3 * rod->nn && f != GAL_FAMILY_TORSIONAL) R[d] = 0;
+    int st = gal_chol_solve(m->chol0, R, df);
+    free(R);
+    return st;
+}
+
 /* y += s D2K[w, w] w for w = Phi eta (D2K by central differences of the tangent over a translation
  * of GAL_ROM_CUBIC_STEP along w / wmax, wmax its largest translation); w: n of scratch, m->fq and
  * m->K the scratch of the configuration and of the tangents. */

@@ -279,6 +279,16 @@ void gal_rom_band_clear(gal_rom_band *b);
 /* The same, with the correcting displacement du = K0^-1 R over the free dofs into du (ndof; may
  * be NULL). */
 int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du);
+/* The correction of one family alone: K0^-1 of the part of the residual R = K0 du (du from
+ * gal_rom_residual_dir) in family f (at each node its translation along f's direction, as the check
+ * splits them; the twist), into df (ndof; may be du). What a growth on f's residual adds: the
+ * other families' parts of R are within the tolerance (their share is noise of the basis and the
+ * sample), and their static response is stiff translation that a twist correction then carries
+ * into the basis's twist vectors: on data/scenes/iced_gallop.ini at 600 elements it made the
+ * third torsional Ritz vector's stiffness follow the galloping tension (6.54-6.62 Hz along the
+ * cycle, the rod's mode a constant 6.3436), and the rod's internal force pumped a 1.6-deg 6.38-Hz
+ * line into it (BENCHMARKS.md, issue 13, helper line). */
+int gal_rom_residual_family(gal_rom *m, const double *du, gal_family f, double *df);
 /* The basis's next term, an a-priori error indicator (the check of rom_adapt.h): the third-order
  * part of the static response along the modes' displacement w = Phi eta (nmodes entries),
  * c = -(1/6) K0^-1 D2K[w, w] w (D2K: the second directional derivative of the tangent, by central
