@@ -43,8 +43,12 @@ static void test_replay(void)
           "replay: %d growths", info[1].nevents);
     CHECK(info[1].valid && info[1].residual_max < 0.2 * tol, "replay: the checks after the growth read %g",
           info[1].residual_max);
-    /* what the replay removes: restarted in place, the ringing trips the next check */
-    CHECK(info[0].nevents >= 2, "in place: %d growths (the ringing's second one expected)", info[0].nevents);
+    /* what the replay removes: restarted in place, the ringing that the next checks read (it tripped
+     * them while a growth added the whole correction, the other families' stiff part with it; since
+     * the twist's alone, rom.h gal_rom_residual_family, they read it at 0.045 against the replay's 0.002) */
+    CHECK(info[0].nevents >= 2 || info[0].residual_max > 10 * info[1].residual_max,
+          "in place: %d growths, the checks after it read %g (the replay's %g)", info[0].nevents, info[0].residual_max,
+          info[1].residual_max);
     gal_sim_setup_clear(&s);
 }
 
