@@ -33,7 +33,7 @@ DEB_PKGS := libarpack2-dev libsuitesparse-dev libgsl-dev libfftw3-dev libinih-de
             liblapack-dev libblas-dev libopenblas-dev pkg-config gnuplot-nox jq libopenmpi-dev openmpi-bin
 STAMP    := build/.deps-ok
 
-.PHONY: all deps demo check bench report report-bundle-grid report-bundle-partner report-spanset clean fuzz mutate install
+.PHONY: all deps demo check bench diag report report-bundle-grid report-bundle-partner report-spanset clean fuzz mutate install
 all: $(BUILD)/gallop $(BUILD)/libgallop.a
 
 # ---- Debian packages ----
@@ -156,6 +156,14 @@ mutate: | $(STAMP)
 
 bench: $(BUILD)/gallop $(BUILD)/libgallop.a
 	@bash tests/bench/run.sh $(BUILD)
+
+# the diagnostic programs tests/bench/diag_*.c, built (not run: each file says its usage and the
+# BENCHMARKS.md section it measured), e.g. build/bench/diag_line
+DIAG_BIN := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(wildcard tests/bench/diag_*.c))
+diag: $(DIAG_BIN)
+$(BUILD)/bench/diag_%: tests/bench/diag_%.c $(BUILD)/libgallop.a
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -pthread $(CPPFLAGS) $< $(BUILD)/libgallop.a $(LIBS) -o $@
 
 report: $(BUILD)/gallop
 	@bash notebooks-free-reports/make_report.sh $(BUILD)/gallop

@@ -30,131 +30,7 @@
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work,
             const int *lwork, int *info);
 
-enum { T_ETA, T_ETAD, T_INT, T_ATR, T_ATW, T_DAMP, T_SINT, T_SAER, T_SDMP, T_FNL, T_FAER, T_KEFF, NT };
-
-typedef struct {
-    const gal_rod *rod;
-    const gal_loads *loads;
-    const gal_damping *damp;
-    const gal_csc *K0;
-    gal_csc *K;                  /* the tangent's scratch (the rod's pattern) */
-    const double *q_eq;
-    double *g, *f, *u, *w, *mp;  /* nq, nq, ndof, ndof, ndof */
-    double *geq;                 /* ndof: the free gradient at q_eq */
-} ctx_t;
-
-typedef struct {     /* a direction and its record */
-    double *psi, *mpsi, w2, hz, deg; /* ndof, ndof: M psi; deg: the twist at mid-span per unit eta */
-    const double *y; /* reduced shape (r) or NULL */
-    double *rec;     /* nrec x NT */
-    char name[48];
-} dir_t;
-
-/* The terms along d at the full state (t, q, v) (v over the configuration); the model's own from
- * fi, fe, Cr v (r each) when given. */
-static void terms(ctx_t *c, dir_t *d, double t, const double *q, const double *vq, const double *fi,
-                  const double *fe, const double *crv, const double *fi0, int r, double *out)
-{
-    const gal_rod *rod = c->rod;
-    int n = rod->ndof;
-    double eta = 0, etad = 0, gi = 0, atr = 0, atw = 0, dm = 0, lin = 0;
-    for (int k = 0; k < n; k++) c->u[k] = q[rod->free_q[k]] - c->q_eq[rod->free_q[k]];
-    for (int k = 0; k < n; k++) eta += d->mpsi[k] * c->u[k], etad += d->mpsi[k] * vq[rod->free_q[k]];
-    gal_csc_symv(c->K0, c->u, c->w);
-    for (int k = 0; k < n; k++) lin += d->psi[k] * c->w[k];
-    gal_rod_eval(rod, q, NULL, c->g, c->K);
-    double ke = 0;
-    gal_csc_symv(c->K, d->psi, c->w);
-    for (int k = 0; k < n; k++) ke += d->psi[k] * c->w[k];
-    out[T_KEFF] = ke;
-    memset(c->f, 0, (size_t)rod->nq * sizeof(double));
-    if (c->loads->table) gal_loads_full((void *)c->loads, t, q, vq, c->f);
-    for (int k = 0; k < n; k++) {
-        int qi = rod->free_q[k];
-        gi += d->psi[k] * (c->g[qi] - c->geq[k]);
-        if (qi < 3 * rod->nn) atr += d->psi[k] * c->f[qi];
-        else atw += d->psi[k] * c->f[qi];
-        c->w[k] = vq[qi];
-    }
-    memset(c->u, 0, (size_t)n * sizeof(double));
-    if (c->damp) gal_damping_apply(c->damp, c->w, c->u);
-    for (int k = 0; k < n; k++) dm += d->psi[k] * c->u[k];
-    out[T_ETA] = eta, out[T_ETAD] = etad;
-    out[T_INT] = -(gi - lin) * etad, out[T_ATR] = atr * etad, out[T_ATW] = atw * etad, out[T_DAMP] = -dm * etad;
-    out[T_SINT] = out[T_SAER] = out[T_SDMP] = 0;
-    out[T_FNL] = gi - lin, out[T_FAER] = atr + atw;
-    if (fi && d->y) {
-        double si = 0, sa = 0, sd = 0, yl = 0;
-        for (int k = 0; k < r; k++) si += d->y[k] * (fi[k] - fi0[k]), sa += d->y[k] * fe[k], sd += d->y[k] * crv[k];
-        yl = d->w2 * eta;
-        out[T_SINT] = -(si - yl) * etad, out[T_SAER] = sa * etad, out[T_SDMP] = -sd * etad;
-    }
-}
-
-/* |DFT| amplitude of x (n samples every dt) at its peak in [lo, hi] Hz (Hann), the peak into *fp */
-static double line(const double *x, long n, int stride, double dt, double lo, double hi, double *fp)
-{
-    double best = 0, mean = 0;
-    for (long i = 0; i < n; i++) mean += x[i * stride];
-    mean /= n;
-    *fp = 0;
-    for (double f = lo; f <= hi; f += 0.2 / (n * dt)) {
-        double re = 0, im = 0, ws = 0;
-        for (long i = 0; i < n; i++) {
-            double w = 0.5 - 0.5 * cos(2 * GAL_PI * i / (n - 1)), a = 2 * GAL_PI * f * i * dt;
-            re += w * (x[i * stride] - mean) * cos(a), im += w * (x[i * stride] - mean) * sin(a), ws += w;
-        }
-        double amp = 2 * sqrt(re * re + im * im) / ws;
-        if (amp > best) best = amp, *fp = f;
-    }
-    return best;
-}
-
-static void report(const char *who, dir_t *d, long nrec, const double *tt, double t0, double win, double lo, double hi)
-{
-    printf("DIR|%s|%s|%.4f Hz|twist at mid-span %.4g deg per unit\n", who, d->name, d->hz, d->deg);
-    printf("WIN|%s|%s|t0|t1|line deg|at Hz|dE/dt|P_int|P_aero_tr|P_aero_tw|P_damp|P_int model|P_aero model|P_damp model|"
-           "integrator|F_int line|at Hz|F_aero line|at Hz\n", who, d->name);
-    for (double a = t0; a + win <= tt[nrec - 1] + 1e-6; a += win) {
-        long i0 = -1, i1 = -1;
-        for (long i = 0; i < nrec; i++) {
-            if (i0 < 0 && tt[i] >= a - 1e-9) i0 = i;
-            if (tt[i] <= a + win + 1e-9) i1 = i;
-        }
-        if (i0 < 0 || i1 <= i0 + 10) continue;
-        double s[NT] = {0}, fp;
-        for (long i = i0; i < i1; i++)
-            for (int k = T_INT; k <= T_SDMP; k++) s[k] += 0.5 * (d->rec[i * NT + k] + d->rec[(i + 1) * NT + k]) * (tt[i + 1] - tt[i]);
-        double T = tt[i1] - tt[i0];
-        const double *r0 = d->rec + i0 * NT, *r1 = d->rec + i1 * NT;
-        double e0 = 0.5 * r0[T_ETAD] * r0[T_ETAD] + 0.5 * d->w2 * r0[T_ETA] * r0[T_ETA];
-        double e1 = 0.5 * r1[T_ETAD] * r1[T_ETAD] + 0.5 * d->w2 * r1[T_ETA] * r1[T_ETA];
-        double amp = line(d->rec + i0 * NT + T_ETA, i1 - i0 + 1, NT, (tt[i1] - tt[i0]) / (i1 - i0), lo, hi, &fp);
-        double kmin = INFINITY, kmax = -INFINITY, km = 0;
-        for (long i = i0; i <= i1; i++) {
-            double kk = d->rec[i * NT + T_KEFF];
-            kmin = fmin(kmin, kk), kmax = fmax(kmax, kk), km += kk / (i1 - i0 + 1);
-        }
-        printf("KEFF|%s|%s|%.1f|%.1f|mean %.4f Hz|min %.4f|max %.4f|psi^T K0 psi %.4f Hz\n", who, d->name, tt[i0], tt[i1],
-               sqrt(fmax(km, 0)) / (2 * GAL_PI), sqrt(fmax(kmin, 0)) / (2 * GAL_PI), sqrt(fmax(kmax, 0)) / (2 * GAL_PI),
-               sqrt(d->w2) / (2 * GAL_PI));
-        double de = (e1 - e0) / T, own = s[T_SINT] + s[T_SAER] + s[T_SDMP], ff, fa;
-        double dt = (tt[i1] - tt[i0]) / (i1 - i0);
-        double fn = line(d->rec + i0 * NT + T_FNL, i1 - i0 + 1, NT, dt, lo, hi, &ff);
-        double an = line(d->rec + i0 * NT + T_FAER, i1 - i0 + 1, NT, dt, lo, hi, &fa);
-        printf("WIN|%s|%s|%.1f|%.1f|%.3g|%.3f|%.3g|%.3g|%.3g|%.3g|%.3g|%.3g|%.3g|%.3g|%.3g|%.3g|%.3f|%.3g|%.3f\n", who, d->name, tt[i0], tt[i1],
-               amp * fabs(d->deg), fp, de, s[T_INT] / T, s[T_ATR] / T, s[T_ATW] / T, s[T_DAMP] / T, s[T_SINT] / T,
-               s[T_SAER] / T, s[T_SDMP] / T, d->y ? de - own / T : de - (s[T_INT] + s[T_ATR] + s[T_ATW] + s[T_DAMP]) / T,
-               fn, ff, an, fa);
-    }
-}
-
-/* the twist dof at mid-span of a free-dof vector */
-static double mid_twist(const gal_rod *rod, const double *x)
-{
-    int d = rod->dof[3 * rod->nn + rod->p.elements / 2];
-    return d < 0 ? 0 : x[d] * 180 / GAL_PI;
-}
+#include "diag_line.h"
 
 /* ---- the kill wrapper: the loads less psi's share (aero) or plus the internal force's
  * nonlinear part along psi (int), from t_kill on ---- */
@@ -350,44 +226,6 @@ static int pass2(gal_sim_setup *s, run_t *R, gal_rom_adapt *a, ctx_t *c, double 
     return st;
 }
 
-/* the basis vectors that make up a reduced band mode (its largest coefficients) */
-static void compose(const gal_rom *m, const gal_rom_adapt *a, const dir_t *d)
-{
-    int r = m->r, used[96] = {0};
-    printf("COMPOSE|%s", d->name);
-    for (int t = 0; t < 6 && t < r; t++) {
-        int b = -1;
-        for (int i = 0; i < r; i++)
-            if (!used[i] && (b < 0 || fabs(d->y[i]) > fabs(d->y[b]))) b = i;
-        used[b] = 1;
-        if (b < m->nmodes) printf("|mode %.4f Hz %.3f", sqrt(m->omega2[b]) / (2 * GAL_PI), d->y[b]);
-        else if (b >= r - a->nextra) printf("|correction %d %.3f", b - (r - a->nextra), d->y[b]);
-        else printf("|derivative col %d %.3f", b, d->y[b]);
-    }
-    printf("\n");
-}
-
-/* psi's part outside the full mode phi (ov = phi^T M psi): its mass share per family and its
- * share of psi's stiffness psi^T K0 psi */
-static void rest(ctx_t *c, const dir_t *d, const dir_t *f, double ov)
-{
-    const gal_rod *rod = c->rod;
-    int n = rod->ndof;
-    double tw = 0, tr = 0, kr = 0, kp = 0;
-    for (int j = 0; j < n; j++) c->u[j] = d->psi[j] - ov * f->psi[j];
-    for (int j = 0; j < n; j++) {
-        double e = c->u[j] * c->u[j] * rod->mdiag[j];
-        if (rod->free_q[j] < 3 * rod->nn) tr += e;
-        else tw += e;
-    }
-    gal_csc_symv(c->K0, c->u, c->w);
-    for (int j = 0; j < n; j++) kr += c->u[j] * c->w[j];
-    gal_csc_symv(c->K0, d->psi, c->w);
-    for (int j = 0; j < n; j++) kp += d->psi[j] * c->w[j];
-    printf("REST|%s less %s|mass: translations %.3g, twist %.3g|stiffness %.3g of psi's (%.4g Hz alone)\n", d->name,
-           f->name, tr, tw, kr / kp, sqrt(kr / fmax(tr + tw, 1e-300)) / (2 * GAL_PI));
-}
-
 /* the mid-span twist p-p over [a, b] */
 static double pp(const double *tt, const double *x, long n, double a, double b)
 {
@@ -426,47 +264,42 @@ static int full_run(gal_sim_setup *s, run_t *R, ctx_t *c, double t0, dir_t *dir,
     return st;
 }
 
-int main(int argc, char **argv)
-{
-    if (argc < 2) {
-        fprintf(stderr, "usage: diag_line SCENE [--set k=v]... [--from T0] [--win W] [--lo HZ] [--hi HZ] [--full] "
-                        "[--nohyper] [--loads-every] [--tol T] [--kill aero|int|none T]\n");
-        return 2;
-    }
+typedef struct {
     const char *ov[32];
-    int nov = 0, full = 0, nohyper = 0, every = 0, kmode = 0, corr = 0;
-    double t0 = 150, win = 30, lo = 5.5, hi = 7.5, tol = -1, kt = 0;
+    int nov, full, nohyper, every, kmode, corr;
+    double t0, win, lo, hi, tol, kt;
+} args_t;
+
+static int parse(int argc, char **argv, args_t *A)
+{
+    memset(A, 0, sizeof *A);
+    A->t0 = 150, A->win = 30, A->lo = 5.5, A->hi = 7.5, A->tol = -1;
     for (int i = 2; i < argc; i++) {
-        if (!strcmp(argv[i], "--set") && i + 1 < argc && nov < 32) ov[nov++] = argv[++i];
-        else if (!strcmp(argv[i], "--from") && i + 1 < argc) t0 = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--win") && i + 1 < argc) win = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--lo") && i + 1 < argc) lo = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--hi") && i + 1 < argc) hi = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--tol") && i + 1 < argc) tol = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--full")) full = 1;
-        else if (!strcmp(argv[i], "--corr") && i + 1 < argc) {
-            i++;
-            corr = !strcmp(argv[i], "twist0") ? 1 : !strcmp(argv[i], "twistR") ? 2 : 0;
-        }
-        else if (!strcmp(argv[i], "--nohyper")) nohyper = 1;
-        else if (!strcmp(argv[i], "--loads-every")) every = 1;
-        else if (!strcmp(argv[i], "--kill") && i + 2 < argc) {
-            kmode = !strcmp(argv[i + 1], "aero") ? 1 : !strcmp(argv[i + 1], "int") ? 2 : 0;
-            kt = atof(argv[i + 2]), i += 2;
-        } else { fprintf(stderr, "diag_line: unknown argument %s\n", argv[i]); return 2; }
+        const char *s = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(s, "--full")) A->full = 1;
+        else if (!strcmp(s, "--nohyper")) A->nohyper = 1;
+        else if (!strcmp(s, "--loads-every")) A->every = 1;
+        else if (!v) return 2;
+        else if (!strcmp(s, "--set") && A->nov < 32) A->ov[A->nov++] = v, i++;
+        else if (!strcmp(s, "--from")) A->t0 = atof(v), i++;
+        else if (!strcmp(s, "--win")) A->win = atof(v), i++;
+        else if (!strcmp(s, "--lo")) A->lo = atof(v), i++;
+        else if (!strcmp(s, "--hi")) A->hi = atof(v), i++;
+        else if (!strcmp(s, "--tol")) A->tol = atof(v), i++;
+        else if (!strcmp(s, "--corr")) A->corr = !strcmp(v, "twist0") ? 1 : !strcmp(v, "twistR") ? 2 : 0, i++;
+        else if (!strcmp(s, "--kill") && i + 2 < argc) {
+            A->kmode = !strcmp(v, "aero") ? 1 : !strcmp(v, "int") ? 2 : 0;
+            A->kt = atof(argv[i + 2]), i += 2;
+        } else return 2;
     }
-    gal_scene sc;
-    gal_sim_setup s;
-    if (gal_scene_load(&sc, argv[1], ov, nov, NULL) || gal_sim_setup_init(&s, &sc, 1) ||
-        gal_forward(s.model, s.data, GAL_STAGE_REDUCED)) {
-        printf("ERR|%s\n", gal_error_message());
-        return 1;
-    }
-    gal_data *d = s.data;
-    const gal_rod *rod = d->eq.rod;
+    return 0;
+}
+
+/* the run's step, sampling and model options as the CLI's (sim.c, integrator_rom.c) */
+static void run_setup(const gal_scene *sc, const gal_data *d, const args_t *A, run_t *R)
+{
     gal_run_opts o;
-    gal_run_opts_from_scene(&sc, &o);
-    run_t *R = calloc(1, sizeof *R);
+    gal_run_opts_from_scene(sc, &o);
     double fhi = 0;
     for (int k = 0; k < d->md.n; k++)
         if (d->md.mode[k].selected) fhi = fmax(fhi, d->md.mode[k].frequency_hz);
@@ -477,40 +310,20 @@ int main(int argc, char **argv)
     gal_rom_default_opts(&R->ro);
     R->ro.h = R->h, R->ro.rho_inf = o.rho_inf, R->ro.damping = d->damping, R->ro.hyper_check_interval = 0;
     if (o.newton_tol > 0) R->ro.newton_tol = o.newton_tol;
-    if (nohyper) R->ro.hyper = 0;
-    if (every) R->ro.loads_once = 0;
+    if (A->nohyper) R->ro.hyper = 0;
+    if (A->every) R->ro.loads_once = 0;
     if (d->loads.table) R->F.eval = gal_loads_full, R->F.element = gal_loads_element, R->F.ctx = (void *)&d->loads;
-    R->tol = tol >= 0 ? tol : sc.model.residual_tolerance;
-    printf("RUN|%s|%d elements|h %.6g s|output %.6g s|rho_inf %.3g|duration %.0f s|hyper %d|loads_once %d|tol %.3g\n",
-           argv[1], rod->p.elements, R->h, R->dt_out, o.rho_inf, R->t_end, R->ro.hyper, R->ro.loads_once, R->tol);
-    gal_rom_adapt a;
-    int st = pass1(&s, R, &a);
-    if (st) { printf("ERR|pass 1: %s\n", gal_error_message()); return 1; }
-    if (corr && (st = alter_corrections(&s, &a, corr))) { printf("ERR|corr: %s\n", gal_error_message()); return 1; }
-    int n = rod->ndof;
-    ctx_t c = {rod, &d->loads, d->damping, NULL, NULL, d->eq.q, NULL, NULL, NULL, NULL, NULL, NULL};
-    c.g = malloc((size_t)2 * rod->nq * sizeof(double)), c.f = c.g + rod->nq, c.K = gal_csc_clone(rod->K);
-    c.u = malloc((size_t)4 * n * sizeof(double)), c.w = c.u + n, c.mp = c.w + n, c.geq = c.mp + n;
-    gal_rod_eval(rod, d->eq.q, NULL, c.g, NULL);
-    gal_rod_gather(rod, c.g, c.geq);
-    dir_t dir[16];
-    memset(dir, 0, sizeof dir);
-    int nd = 0;
-    double *tt;
-    long nrec;
-    gal_rom *m;
-    if ((st = pass2(&s, R, &a, &c, t0, lo, hi, kmode, kt, dir, &nd, &tt, &nrec, &m))) {
-        printf("ERR|pass 2: %s\n", gal_error_message());
-        return 1;
-    }
-    printf("BASIS|%d vectors|%d modes|%d corrections|last growth %.2f s\n", m->r, a.nsel, a.nextra, R->tgrow);
-    double tw_end = tt[nrec - 1];
-    printf("TWIST|reduced|p-p %.4g deg over %.0f-%.0f s\n", pp(tt, g_twist, nrec, tw_end - 60, tw_end), tw_end - 60, tw_end);
-    /* the full rod's modes in the band, and their overlap with the reduced ones */
-    int nfull = 0;
-    gal_modes fm;
-    memset(&fm, 0, sizeof fm);
-    int want[GAL_FAMILY_COUNT] = {sc.model.modes_vertical, sc.model.modes_horizontal, 4, 0};
+    R->tol = A->tol >= 0 ? A->tol : sc->model.residual_tolerance;
+}
+
+/* the full rod's modes in [lo, hi] as directions after dir[0..nd-1]; their overlaps with those */
+static int full_dirs(const gal_scene *sc, const gal_data *d, ctx_t *c, const gal_rom *m, const gal_rom_adapt *a,
+                     double lo, double hi, dir_t *dir, int nd)
+{
+    const gal_rod *rod = d->eq.rod;
+    int n = rod->ndof, nfull = 0;
+    static gal_modes fm;
+    int want[GAL_FAMILY_COUNT] = {sc->model.modes_vertical, sc->model.modes_horizontal, 4, 0};
     if (gal_modes_find(rod, d->eq.q, want, 200, &fm)) printf("ERR|modes: %s\n", gal_error_message());
     for (int k = 0; k < fm.n && nd + nfull < 16; k++) {
         if (fm.mode[k].frequency_hz < lo || fm.mode[k].frequency_hz > hi) continue;
@@ -521,20 +334,66 @@ int main(int argc, char **argv)
         snprintf(e->name, sizeof e->name, "full mode %.4f Hz (%s)", e->hz, gal_family_names[fm.mode[k].family]);
     }
     for (int i = 0; i < nd; i++) {
-        compose(m, &a, &dir[i]);
+        compose(m, a, &dir[i]);
         for (int k = nd; k < nd + nfull; k++) {
             double ov = 0;
             for (int j = 0; j < n; j++) ov += dir[i].mpsi[j] * dir[k].psi[j];
             printf("OVERLAP|%s|%s|%.4f\n", dir[i].name, dir[k].name, ov);
-            rest(&c, &dir[i], &dir[k], ov);
+            rest(c, &dir[i], &dir[k], ov);
         }
     }
-    for (int k = 0; k < nd; k++) report("reduced run", &dir[k], nrec, tt, t0, win, lo, hi);
-    if (full) {
-        for (int k = 0; k < nd + nfull; k++) free(dir[k].rec), dir[k].rec = NULL;
-        if ((st = full_run(&s, R, &c, t0, dir, nd + nfull, &tt, &nrec))) { printf("ERR|full: %s\n", gal_error_message()); return 1; }
-        printf("TWIST|full|p-p %.4g deg over %.0f-%.0f s\n", pp(tt, g_twist, nrec, tw_end - 60, tw_end), tw_end - 60, tw_end);
-        for (int k = 0; k < nd + nfull; k++) report("full run", &dir[k], nrec, tt, t0, win, lo, hi);
+    return nfull;
+}
+
+int main(int argc, char **argv)
+{
+    args_t A;
+    if (argc < 2 || parse(argc, argv, &A)) {
+        fprintf(stderr, "usage: diag_line SCENE [--set k=v]... [--from T0] [--win W] [--lo HZ] [--hi HZ] [--full] "
+                        "[--nohyper] [--loads-every] [--tol T] [--corr twist0|twistR] [--kill aero|int|none T]\n");
+        return 2;
     }
+    gal_scene sc;
+    gal_sim_setup s;
+    if (gal_scene_load(&sc, argv[1], A.ov, A.nov, NULL) || gal_sim_setup_init(&s, &sc, 1) ||
+        gal_forward(s.model, s.data, GAL_STAGE_REDUCED)) {
+        printf("ERR|%s\n", gal_error_message());
+        return 1;
+    }
+    gal_data *d = s.data;
+    const gal_rod *rod = d->eq.rod;
+    run_t *R = calloc(1, sizeof *R);
+    run_setup(&sc, d, &A, R);
+    printf("RUN|%s|%d elements|h %.6g s|output %.6g s|rho_inf %.3g|duration %.0f s|hyper %d|loads_once %d|tol %.3g\n",
+           argv[1], rod->p.elements, R->h, R->dt_out, R->ro.rho_inf, R->t_end, R->ro.hyper, R->ro.loads_once, R->tol);
+    gal_rom_adapt a;
+    int st = pass1(&s, R, &a);
+    if (!st && A.corr) st = alter_corrections(&s, &a, A.corr);
+    if (st) { printf("ERR|pass 1: %s\n", gal_error_message()); return 1; }
+    int n = rod->ndof, nd = 0;
+    ctx_t c = {rod, &d->loads, d->damping, NULL, NULL, d->eq.q, NULL, NULL, NULL, NULL, NULL, NULL};
+    c.g = malloc((size_t)2 * rod->nq * sizeof(double)), c.f = c.g + rod->nq, c.K = gal_csc_clone(rod->K);
+    c.u = malloc((size_t)4 * n * sizeof(double)), c.w = c.u + n, c.mp = c.w + n, c.geq = c.mp + n;
+    gal_rod_eval(rod, d->eq.q, NULL, c.g, NULL);
+    gal_rod_gather(rod, c.g, c.geq);
+    dir_t dir[16];
+    memset(dir, 0, sizeof dir);
+    double *tt;
+    long nrec;
+    gal_rom *m;
+    if ((st = pass2(&s, R, &a, &c, A.t0, A.lo, A.hi, A.kmode, A.kt, dir, &nd, &tt, &nrec, &m))) {
+        printf("ERR|pass 2: %s\n", gal_error_message());
+        return 1;
+    }
+    printf("BASIS|%d vectors|%d modes|%d corrections|last growth %.2f s\n", m->r, a.nsel, a.nextra, R->tgrow);
+    double te = tt[nrec - 1], tw = fmax(tt[0], te - 60);
+    printf("TWIST|reduced|p-p %.4g deg over %.0f-%.0f s\n", pp(tt, g_twist, nrec, tw, te), tw, te);
+    int nfull = full_dirs(&sc, d, &c, m, &a, A.lo, A.hi, dir, nd);
+    for (int k = 0; k < nd; k++) report("reduced run", &dir[k], nrec, tt, A.t0, A.win, A.lo, A.hi);
+    if (!A.full) return 0;
+    for (int k = 0; k < nd + nfull; k++) free(dir[k].rec), dir[k].rec = NULL;
+    if ((st = full_run(&s, R, &c, A.t0, dir, nd + nfull, &tt, &nrec))) { printf("ERR|full: %s\n", gal_error_message()); return 1; }
+    printf("TWIST|full|p-p %.4g deg over %.0f-%.0f s\n", pp(tt, g_twist, nrec, tw, te), tw, te);
+    for (int k = 0; k < nd + nfull; k++) report("full run", &dir[k], nrec, tt, A.t0, A.win, A.lo, A.hi);
     return 0;
 }

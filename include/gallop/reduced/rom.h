@@ -257,8 +257,10 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
 /* The reduced modes of (K0r, I) above a frequency band (rom_check.c): the basis's vectors there are
  * Ritz approximations of modes the structural damping does not reach (damping.h: modal damping
  * stops at its band), so an oscillation they carry rings undamped on a frequency that is a few
- * tenths of a percent to percents off the rod's; data/scenes/iced_gallop.ini at 600 elements rings
- * 1.6 deg of twist at 6.38 Hz where the full model has 5e-5 deg, and the residual does not see it.
+ * tenths of a percent to percents off the rod's; data/scenes/iced_gallop.ini at 600 elements rang
+ * 1.6 deg of twist at 6.38 Hz where the full model has 5e-5 deg, and the residual did not see it
+ * (the cause, a growth's correction carrying stiff translations into the twist's Ritz vector, is
+ * fixed: gal_rom_residual_family).
  * A diagnostic: not (yet) part of the self-check, whose refusal it cannot yet decide soundly
  * (BENCHMARKS.md, issue 13, helper growth2: the reading on correct runs comes within 15% of the
  * wrong one's). */

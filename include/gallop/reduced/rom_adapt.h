@@ -1,7 +1,7 @@
 /* rom_adapt.h: the recomputed reduced model's adaptation (issue 13): where its self-check
- * (gal_rom_residual) passes the tolerance, the basis grows: the residual's own correction
- * direction du = K0^-1 R at the failing state and the next computed mode of the family whose
- * residual is largest (with its modal derivatives); a new gal_rom is allocated on the larger basis
+ * (gal_rom_residual) passes the tolerance, the basis grows: the correction of the family whose
+ * residual is largest, K0^-1 of that family's part of R at the failing state (rom.h
+ * gal_rom_residual_family), and the next computed mode of that family (with its modal derivatives); a new gal_rom is allocated on the larger basis
  * (gal_rom_alloc, so that whatever it builds is rebuilt) and run again from the run's start to the
  * time of the failing check (gal_rom_adapt_replay_from; the run's drivers do), or else started from
  * the old one's reconstructed full state. Each growth is logged (time, basis, family, what was added). A family's
