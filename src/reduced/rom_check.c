@@ -7,7 +7,8 @@
  * that the axial forces, large and balanced, do not swamp the transverse ones). Also the power
  * along the full velocity, per family, of R, of the load and of the damping force (diagnostics:
  * the reduced equations are the full ones projected on the basis, so R does no work along the
- * reconstructed velocity but for the hyper-reduction's error; BENCHMARKS.md). */
+ * reconstructed velocity but for the hyper-reduction's error; BENCHMARKS.md). The correction of one
+ * family alone, what a growth adds (gal_rom_residual_family). */
 #include "gallop/reduced/rom.h"
 #include "gallop/base/core.h"
 
@@ -152,7 +153,11 @@ int gal_rom_residual_family(gal_rom *m, const double *du, gal_family f, double *
     gal_csc_symv(m->K0, du, R); /* the residual again, R = K0 du */
     for (int i = 0; i < rod->nn; i++) { /* each node's translation: its part along f's direction */
         int d0 = node_dof(rod, i);
-        if (d0 < 0) continue;
+        if (d0 < 0) { /* partly fixed: in no family, as in the check */
+            for (int c = 0; c < 3; c++)
+                if (rod->dof[3 * i + c] >= 0) R[rod->dof[3 * i + c]] = 0;
+            continue;
+        }
         double e[3][3], keep[3] = {0, 0, 0};
         gal_rod_node_directions(rod, m->q_eq, i, e[2], e[1], e[0]); /* vertical, horizontal, axial */
         int k = f == GAL_FAMILY_VERTICAL ? 0 : f == GAL_FAMILY_HORIZONTAL ? 1 : f == GAL_FAMILY_AXIAL ? 2 : -1;
@@ -162,7 +167,7 @@ int gal_rom_residual_family(gal_rom *m, const double *du, gal_family f, double *
         }
         memcpy(R + d0, keep, sizeof keep);
     }
-    for (int d = 0; d < n; d++) /* the twist, and whatever is neither a node's translation nor a twist */
+    for (int d = 0; d < n; d++) /* the twist */
         if (rod->free_q[d] >= 3 * rod->nn && f != GAL_FAMILY_TORSIONAL) R[d] = 0;
     int st = gal_chol_solve(m->chol0, R, df);
     free(R);
