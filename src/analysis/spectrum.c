@@ -114,35 +114,94 @@ int gal_spectrum_psd(gal_welch *w, const double *x, size_t n, double dt, double 
 
 /* ---- sub-bin refinement on the whole record ---- */
 
-/* |X(f)|^2 of the Hann-windowed centred record (spectrum.h, gal_spectrum_refine); the phasors
- * e^{-i w j} and e^{i th j} run by rotation and are reset exactly every 1024 samples. */
-static double dtft2(const double *x, size_t n, double dt, double mean, double f, double *wsum)
+/* |X(f)|^2 of the Hann-windowed centred record (spectrum.h, gal_spectrum_refine) at the four
+ * frequencies f[0..3] into p (and sum w into *wsum); the phasors e^{-i w j} and e^{i th j} run by
+ * rotation and are reset exactly every 1024 samples. Each frequency's sums are those of a loop over
+ * that frequency alone, in the same order (the four interleaved: four dependency chains instead
+ * of one, the window's shared). */
+static void dtft2x4(const double *x, size_t n, double dt, double mean, const double *f, double *p, double *wsum)
 {
-    double om = 2 * GAL_PI * f * dt, th = 2 * GAL_PI / (double)n;
-    double cr = cos(om), sr = -sin(om), ct = cos(th), st = sin(th);
-    double re = 0, im = 0, ws = 0;
+    double th = 2 * GAL_PI / (double)n, ct = cos(th), st = sin(th), ws = 0;
+    double om[4], cr[4], sr[4], re[4] = {0, 0, 0, 0}, im[4] = {0, 0, 0, 0}, zr[4], zi[4];
+    for (int q = 0; q < 4; q++) om[q] = 2 * GAL_PI * f[q] * dt, cr[q] = cos(om[q]), sr[q] = -sin(om[q]);
     for (size_t j0 = 0; j0 < n; j0 += 1024) {
-        double zr = cos(om * (double)j0), zi = -sin(om * (double)j0);   /* e^{-i om j} */
-        double ur = cos(th * (double)j0), ui = sin(th * (double)j0);    /* e^{i th j} */
+        for (int q = 0; q < 4; q++) zr[q] = cos(om[q] * (double)j0), zi[q] = -sin(om[q] * (double)j0); /* e^{-i om j} */
+        double ur = cos(th * (double)j0), ui = sin(th * (double)j0); /* e^{i th j} */
         size_t j1 = j0 + 1024 < n ? j0 + 1024 : n;
+        double r0 = re[0], r1 = re[1], r2 = re[2], r3 = re[3], i0 = im[0], i1 = im[1], i2 = im[2], i3 = im[3];
+        double a0 = zr[0], a1 = zr[1], a2 = zr[2], a3 = zr[3], b0 = zi[0], b1 = zi[1], b2 = zi[2], b3 = zi[3];
         for (size_t j = j0; j < j1; j++) {
             double wj = 0.5 - 0.5 * ur;
-            double v = wj * (x[j] - mean);
-            re += v * zr;
-            im += v * zi;
+            double v = wj * (x[j] - mean), t;
             ws += wj;
-            double t = zr * cr - zi * sr;
-            zi = zr * sr + zi * cr;
-            zr = t;
+#define GAL_DTFT_ROTATE(R, I, A, B, q) \
+    R += v * A, I += v * B, t = A * cr[q] - B * sr[q], B = A * sr[q] + B * cr[q], A = t
+            GAL_DTFT_ROTATE(r0, i0, a0, b0, 0);
+            GAL_DTFT_ROTATE(r1, i1, a1, b1, 1);
+            GAL_DTFT_ROTATE(r2, i2, a2, b2, 2);
+            GAL_DTFT_ROTATE(r3, i3, a3, b3, 3);
+#undef GAL_DTFT_ROTATE
             t = ur * ct - ui * st;
             ui = ur * st + ui * ct;
             ur = t;
         }
+        re[0] = r0, re[1] = r1, re[2] = r2, re[3] = r3, im[0] = i0, im[1] = i1, im[2] = i2, im[3] = i3;
     }
     if (wsum) *wsum = ws;
-    return re * re + im * im;
+    for (int q = 0; q < 4; q++) p[q] = re[q] * re[q] + im[q] * im[q];
 }
 
+/* |X(f)|^2 at one frequency (dtft2x4's) */
+static double dtft2(const double *x, size_t n, double dt, double mean, double f, double *wsum)
+{
+    double fs[4] = {f, f, f, f}, p[4];
+    dtft2x4(x, n, dt, mean, fs, p, wsum);
+    return p[0];
+}
+
+/* The golden section's state: the bracket [a, b], its inner points c < d and |X|^2 there. */
+typedef struct { double a, b, c, d, pc, pd; } golden;
+
+/* One golden-section iteration with p the value at the point it adds (golden_next's). */
+static void golden_step(golden *g, double gr, double p)
+{
+    if (g->pc >= g->pd) {
+        g->b = g->d, g->d = g->c, g->pd = g->pc;
+        g->c = g->b - gr * (g->b - g->a), g->pc = p;
+    } else {
+        g->a = g->c, g->c = g->d, g->pc = g->pd;
+        g->d = g->a + gr * (g->b - g->a), g->pd = p;
+    }
+}
+
+/* The point the next iteration from g adds. */
+static double golden_next(const golden *g, double gr)
+{
+    return g->pc >= g->pd ? g->d - gr * (g->d - g->a) : g->c + gr * (g->b - g->c);
+}
+
+/* The golden section from g down to (b - a) <= tol or 60 iterations, two iterations a pass over
+ * the record: the next point and both points the one after may add (the iterations and their
+ * values exactly those of one point at a time). */
+static void golden_run(const double *x, size_t n, double dt, double mean, double gr, double tol, golden *g)
+{
+    int it = 0;
+    while (it < 60 && (g->b - g->a) > tol) {
+        double f[4], p[4];
+        golden lo = *g, hi;
+        f[0] = golden_next(g, gr);
+        golden_step(&lo, gr, 0); /* the state after it, for either outcome of its comparison */
+        hi = lo;
+        lo.pc = 1, lo.pd = 0; /* pc >= pd */
+        hi.pc = 0, hi.pd = 1;
+        f[1] = golden_next(&lo, gr), f[2] = golden_next(&hi, gr), f[3] = f[2];
+        dtft2x4(x, n, dt, mean, f, p, NULL);
+        golden_step(g, gr, p[0]);
+        if (++it >= 60 || !((g->b - g->a) > tol)) break;
+        golden_step(g, gr, g->pc >= g->pd ? p[1] : p[2]);
+        it++;
+    }
+}
 int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double halfwidth,
                         double *f, double *amplitude)
 {
@@ -155,34 +214,33 @@ int gal_spectrum_refine(const double *x, size_t n, double dt, double f0, double 
     if (hi > fnyq) hi = fnyq;
     if (!(hi >= lo)) return gal_error(GAL_EINPUT, "refine: no frequency range near %g Hz", f0);
     /* grid search for the bracket; at most 513 points (a segment far shorter than the record,
-     * n > 200 nseg, gets a grid coarser than half a record bin) */
+     * n > 200 nseg, gets a grid coarser than half a record bin); four points a pass */
     size_t ng = (size_t)ceil((hi - lo) / h) + 1;
     if (ng > 513) ng = 513, h = (hi - lo) / 512;
     double best = -1, fb = f0;
-    for (size_t g = 0; g < ng; g++) {
-        double fg = lo + (hi - lo) * (ng > 1 ? (double)g / (double)(ng - 1) : 0.5);
-        double p = dtft2(x, n, dt, mean, fg, NULL);
-        if (p > best) best = p, fb = fg;
+    for (size_t g0 = 0; g0 < ng; g0 += 4) {
+        double fg[4], p[4];
+        for (size_t q = 0; q < 4; q++) {
+            size_t g = g0 + q < ng ? g0 + q : ng - 1;
+            fg[q] = lo + (hi - lo) * (ng > 1 ? (double)g / (double)(ng - 1) : 0.5);
+        }
+        dtft2x4(x, n, dt, mean, fg, p, NULL);
+        for (size_t q = 0; q < 4 && g0 + q < ng; q++)
+            if (p[q] > best) best = p[q], fb = fg[q];
     }
     /* golden section on [fb - h, fb + h]: the Hann main lobe (+-2 record bins) is unimodal there */
-    double a = fb - h, b = fb + h;
-    if (a < lo) a = lo;
-    if (b > hi) b = hi;
+    golden g;
+    g.a = fb - h, g.b = fb + h;
+    if (g.a < lo) g.a = lo;
+    if (g.b > hi) g.b = hi;
     const double gr = 0.5 * (sqrt(5.0) - 1);
-    double c = b - gr * (b - a), d = a + gr * (b - a);
-    double pc = dtft2(x, n, dt, mean, c, NULL), pd = dtft2(x, n, dt, mean, d, NULL);
-    for (int it = 0; it < 60 && (b - a) > 1e-9 * h; it++) {
-        if (pc >= pd) {
-            b = d, d = c, pd = pc;
-            c = b - gr * (b - a);
-            pc = dtft2(x, n, dt, mean, c, NULL);
-        } else {
-            a = c, c = d, pc = pd;
-            d = a + gr * (b - a);
-            pd = dtft2(x, n, dt, mean, d, NULL);
-        }
-    }
-    double fr = 0.5 * (a + b), ws;
+    double fcd[4], pcd[4];
+    g.c = g.b - gr * (g.b - g.a), g.d = g.a + gr * (g.b - g.a);
+    fcd[0] = g.c, fcd[1] = fcd[2] = fcd[3] = g.d;
+    dtft2x4(x, n, dt, mean, fcd, pcd, NULL);
+    g.pc = pcd[0], g.pd = pcd[1];
+    golden_run(x, n, dt, mean, gr, 1e-9 * h, &g);
+    double fr = 0.5 * (g.a + g.b), ws;
     double p = dtft2(x, n, dt, mean, fr, &ws);
     if (p < best) {   /* the grid point was better (edge of the range) */
         fr = fb;

@@ -133,19 +133,18 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
         gal_json_obj_end(j);
     }
     int mid = gal_sim_mid_probe(r), st;
-    gal_sim_measures mm;
-    if ((st = gal_sim_measure(r, mid, -1, &mm))) return st;
-    json_run(j, r, &mm);
+    gal_sim_measures m[GAL_MAX_PROBES]; /* each probe measured once (the mid-span one is the run's too) */
+    for (int k = 0; k < r->nprobe; k++)
+        if ((st = gal_sim_measure(r, k, -1, m + k))) return st;
+    json_run(j, r, m + mid);
     double from[GAL_MAX_PROBES];
     gal_json_key(j, "probes");
     gal_json_arr_begin(j);
     for (int k = 0; k < r->nprobe; k++) {
-        gal_sim_measures m;
-        if ((st = gal_sim_measure(r, k, -1, &m))) return st;
         gal_json_obj_begin(j);
         gal_json_kv_num(j, "position", r->probe[k]);
-        json_measures(j, &m);
-        from[k] = m.steady_from_s;
+        json_measures(j, m + k);
+        from[k] = m[k].steady_from_s;
         if ((st = gal_cigre_json_probe(j, sc, r, k, from[k]))) return st;   /* ellipse, clearances */
         gal_json_obj_end(j);
     }
