@@ -99,8 +99,7 @@ int gal_cli_simulate(int argc, char **argv)
     if (!st) st = gal_run_check_measurable(m, d, &o); /* before the run */
     if (!st) st = gal_run(m, d, T, &o, &r);
     gal_sim_measures ms;
-    if (!st) st = gal_sim_measure(&r, gal_sim_mid_probe(&r), -1, &ms);
-    if (!st) st = gal_sim_write(outdir, &sc, &r);
+    if (!st) st = gal_sim_write_measured(outdir, &sc, &r, &ms); /* and the mid-span measures */
     if (!st) {
         print_run(T->name, &r, &ms);
         printf("files: %s/{trace.csv,summary.json}\n", outdir);

@@ -105,7 +105,7 @@ static void json_run(gal_json *j, const gal_sim_result *r, const gal_sim_measure
     }
 }
 
-static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *r)
+static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_result *r, gal_sim_measures *mid_out)
 {
     gal_json *j = gal_outset_summary(o);
     if (!j) return GAL_EIO;
@@ -137,6 +137,7 @@ static int write_summary(gal_outset *o, const gal_scene *sc, const gal_sim_resul
     for (int k = 0; k < r->nprobe; k++)
         if ((st = gal_sim_measure(r, k, -1, m + k))) return st;
     json_run(j, r, m + mid);
+    if (mid_out) *mid_out = m[mid];
     double from[GAL_MAX_PROBES];
     gal_json_key(j, "probes");
     gal_json_arr_begin(j);
@@ -184,13 +185,18 @@ static void trace_csv(FILE *fp, const gal_sim_result *res)
 
 int gal_sim_write(const char *dir, const gal_scene *sc, const gal_sim_result *r)
 {
+    return gal_sim_write_measured(dir, sc, r, NULL);
+}
+
+int gal_sim_write_measured(const char *dir, const gal_scene *sc, const gal_sim_result *r, gal_sim_measures *mid)
+{
     gal_outset *o;
     int st = gal_outset_begin(&o, dir, "simulate");
     if (!st) st = gal_outset_scene(o, sc);
     FILE *fp = st ? NULL : gal_outset_open(o, "trace.csv");
     if (!st && !fp) st = GAL_EIO;
     if (fp) trace_csv(fp, r), st = gal_outset_close(o, fp);
-    if (!st) st = write_summary(o, sc, r);
+    if (!st) st = write_summary(o, sc, r, mid);
     if (!st) st = gal_outset_commit(o);
     gal_outset_free(o);
     return st;

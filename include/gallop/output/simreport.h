@@ -21,6 +21,9 @@ void gal_compare_figures_json(gal_json *j, const gal_compare_figures *c);
 
 /* DIR/trace.csv and DIR/summary.json of `gallop simulate`, one output set. */
 int gal_sim_write(const char *dir, const gal_scene *sc, const gal_sim_result *r);
+/* The same, and the measures at the probe nearest mid-span (gal_sim_mid_probe) into *mid, those of
+ * summary.json (each probe measured once). */
+int gal_sim_write_measured(const char *dir, const gal_scene *sc, const gal_sim_result *r, gal_sim_measures *mid);
 /* A lone trace.csv at path (temporary file, then rename), outside any output set. */
 int gal_sim_write_trace(const char *path, const gal_sim_result *res);
 /* DIR/compare.csv and DIR/summary.json of `gallop compare`, one output set; the figures in *out
