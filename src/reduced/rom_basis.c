@@ -36,7 +36,7 @@ void gal_rom_default_opts(gal_rom_opts *o)
     o->max_newton = 20;
     o->hyper = 1, o->hyper_tol = 1e-2, o->hyper_check_tol = 2e-2, o->hyper_twist = 1.5, o->hyper_snapshots = 24;
     o->hyper_check_interval = 1.0, o->hyper_loads = 1, o->reuse_tangent = 1;
-    o->newton_contraction = 0.1, o->newton_kept_max = 3, o->loads_once = 1, o->one_pass = 0, o->newton_carry = 1;
+    o->newton_contraction = 0.1, o->newton_kept_max = 3, o->loads_once = 1, o->one_pass = 0;
 }
 
 gal_rom *gal_rom_free(gal_rom *m)

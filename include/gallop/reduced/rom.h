@@ -98,8 +98,12 @@ typedef struct gal_rom_opts {
                              * of the tolerance (the internal force carried over it by the kept
                              * tangent, as o.one_pass's steps carry theirs); not at rho_inf = 1
                              * (the discrete gradient needs the energy there) nor on the manifold.
-                             * (default; measured: the sampled energy evaluated 23% less at 100
-                             * elements with the same figures); 0: every correction confirmed */
+                             * 0: every correction confirmed (default). Measured (BENCHMARKS.md,
+                             * session 11): the sampled energy evaluated 8-10% less on the cycle at
+                             * 100 elements, compare's figures the same to 3 digits on the limit-cycle
+                             * spans, but grosbeak_300_soft_gj at 100 elements (the known miss) then
+                             * grows to 59 vectors and ends valid 170 deg p-p in twist where Newton
+                             * confirming every correction ends refused (test_cli_rom_cubic.sh) */
     const double *extra;    /* ndof x nextra, column-major: vectors appended after the modal
                              * derivatives (the adaptation's corrections, rom_adapt.h); not owned */
     int nextra;
