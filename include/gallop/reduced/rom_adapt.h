@@ -1,7 +1,8 @@
 /* rom_adapt.h: the recomputed reduced model's adaptation (issue 13): where its self-check
  * (gal_rom_residual) passes the tolerance, the basis grows: the correction of the family whose
  * residual is largest, K0^-1 of that family's part of R at the failing state (rom.h
- * gal_rom_residual_family), and the next computed mode of that family (with its modal derivatives); a new gal_rom is allocated on the larger basis
+ * gal_rom_residual_family; or averaged over the orbit from there, GAL_ROM_ORBIT_*), and the next
+ * computed mode of that family (with its modal derivatives); a new gal_rom is allocated on the larger basis
  * (gal_rom_alloc, so that whatever it builds is rebuilt) and run again from the run's start to the
  * time of the failing check (gal_rom_adapt_replay_from; the run's drivers do), or else started from
  * the old one's reconstructed full state. Each growth is logged (time, basis, family, what was added). A family's
@@ -29,7 +30,7 @@ typedef struct gal_rom_event {
     int basis_before, basis_after;
     int mode_added;         /* index in a->md (the model's modes, or own) of the mode added, or -1 */
     double mode_added_hz;   /* its frequency (0 when none) */
-    int corrections;        /* correction directions added (0 or 1) */
+    int corrections;        /* correction directions added (0 to orbit_vectors) */
 } gal_rom_event;
 
 typedef struct gal_rom_adapt {
@@ -43,6 +44,9 @@ typedef struct gal_rom_adapt {
     gal_force force;
     int policy;             /* GAL_ROM_ADD_* bits; default both */
     int relax;              /* 1 (default): the new stiff directions start quasi-static */
+    int orbit_vectors;      /* corrections per growth taken over the orbit: 1 (the mean) or 2 (and the
+                             * rest's dominant direction); 0 (default): the failing instant's
+                             * family correction, no sampling (GAL_ROM_ORBIT_PERIODS) */
     int sel[GAL_ROM_MODES_MAX], nsel;
     double *extra;          /* ndof x nextra: the correction directions so far */
     int nextra;
@@ -53,6 +57,7 @@ typedef struct gal_rom_adapt {
     int corrected[GAL_FAMILY_COUNT]; /* growths of the family by a correction alone so far */
     const double *q0, *v0; /* the run's start (gal_rom_adapt_replay_from), or NULL: restart in place */
     double replayed_s;      /* s: simulated time run again by the growths so far */
+    long orbit_steps;       /* steps the old models ran on to sample the orbit (gal_rom_adapt_grow) */
     long cubic_checks;      /* checks past GAL_ROM_CUBIC_SETTLE_S so far (the cubic part every
                              * GAL_ROM_CUBIC_EVERY-th) */
 } gal_rom_adapt;
@@ -102,6 +107,27 @@ int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, dou
  * same reconstructed state, counters carried over. GAL_OK when it grew; GAL_ELIMIT (nothing
  * changed, with a message saying what reached its bound) when it cannot grow; another status on
  * failure. */
+/* With orbit_vectors > 0 the correction a growth adds is taken over the orbit, not at the failing
+ * instant: the check's residual direction du and more, the old model run on from the check (its
+ * reconstructed state there kept for a restart in place) over GAL_ROM_ORBIT_PERIODS periods of the
+ * basis's lowest mode, sampled GAL_ROM_ORBIT_PER_PERIOD times per period of its highest (at most
+ * GAL_ROM_ORBIT_SAMPLES samples), each the tripping family's correction alone
+ * (gal_rom_residual_family) without its part in the old basis; added: their mean, Hann-weighted
+ * over the window so that it does not depend on the phase the sampling starts at (and with
+ * orbit_vectors = 2, also the dominant direction of the rest: their POD in the check's norm, per
+ * family, mass-weighted over the failing check's scales). The grown basis then does not depend on
+ * the instant the check trips (tests/test_rom_orbit.c). Not the default (0: the failing instant's
+ * family correction): measured on main's family-alone correction it changes
+ * data/scenes/iced_gallop.ini at 400-1200 elements by at most 0.2 points (both within 0.7% with
+ * either BLAS thread count), and on tests/hard/twist_accumulation (a growth at t = 0, the wind there
+ * at once, the window then a transient of several turns) it ends valid at 210 deg p-p where the
+ * full model turns past 360 (refused with the default); orbit_vectors = 2 left
+ * tests/rom/grosbeak_300_soft_gj valid 21% off in twist (BENCHMARKS.md, issue 13, helper orbit).
+ * The sampling's steps count in the model's steps (and in orbit_steps). */
+#define GAL_ROM_ORBIT_PERIODS 4.0
+#define GAL_ROM_ORBIT_PER_PERIOD 4
+#define GAL_ROM_ORBIT_SAMPLES 64
+#define GAL_ROM_ORBIT_VECTORS 0 /* the default of orbit_vectors (0, 1 or 2) */
 #define GAL_ROM_ELIMIT 1 /* positive: not an error of the computation */
 int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, const double *du);
 
