@@ -206,37 +206,6 @@ static double linear_error(gal_rom *m)
     return isfinite(e) ? e / sc : INFINITY;
 }
 
-/* A linearly implicit step (o.one_pass): the internal force at the predictor, the loads
- * extrapolated; a correction; the loads there (held); a second correction; the internal force
- * carried over both by the kept tangent Kr, whose matrix J is factored for h (o.one_pass: after a
- * Newton step that converged within two passes with it). LINEAR_REJECT, nothing done, when the
- * kept tangent misses the force at the predictor by more than GAL_ROM_LINEAR_TOL (linear_error):
- * the carried forces' errors then grow from step to step (measured on data/scenes/iced_gallop.ini
- * past 500 elements: the stiffest basis vector, the torsional mode's modal derivative, localizes at
- * the node next to a support and its h omega grows with the mesh, 6.1 up to 500 elements, 8.9 at
- * 800, 11 at 1000; there the error went from 0.1 to 1 in five linear steps and the rod's energy at
- * element 0 then was not finite). */
-static int linear_step(gal_rom *m, double h)
-{
-    int r = m->r, st;
-    double rs, raw, *xs = m->fdg; /* scratch: rho_inf < 1 has no discrete gradient */
-    newmark(m, h);
-    if ((st = gal_rom_eval_internal(m, m->x1, m->fi1, NULL))) return st;
-    for (int k = 0; k < r; k++) m->fe1[k] = m->hfe == h ? 2 * m->fe[k] - m->fe_prev[k] : m->fe[k];
-    if (!(linear_error(m) <= GAL_ROM_LINEAR_TOL)) return LINEAR_REJECT;
-    for (int pass = 0; pass < 2; pass++) {
-        if (!isfinite(residual(m, &rs, &raw))) return gal_error(GAL_EFAIL, "reduced model: the residual is not finite");
-        for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
-        lu_solve(m->J, r, m->piv, m->da);
-        memcpy(xs, m->x1, (size_t)r * sizeof(double));
-        for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
-        newmark(m, h);
-        carry_internal(m, xs);
-        if (!pass && (st = gal_rom_eval_external(m, m->t + h, m->x1, m->v1, m->fe1))) return st;
-    }
-    return GAL_OK;
-}
-
 /* A Newton correction from m->res taken as the step's last (o.newton_carry): a1, x1, v1 updated,
  * the internal force carried over it by the kept tangent (its energy m->U1 is the last evaluated:
  * only the discrete gradient, rho_inf = 1, reads it). */
@@ -250,6 +219,32 @@ static void carry_correction(gal_rom *m, double h)
     for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
     newmark(m, h);
     carry_internal(m, xs);
+}
+
+/* A linearly implicit step (o.one_pass): the internal force at the predictor, the loads
+ * extrapolated; a correction; the loads there (held); a second correction; the internal force
+ * carried over both by the kept tangent Kr, whose matrix J is factored for h (o.one_pass: after a
+ * Newton step that converged within two passes with it). LINEAR_REJECT, nothing done, when the
+ * kept tangent misses the force at the predictor by more than GAL_ROM_LINEAR_TOL (linear_error):
+ * the carried forces' errors then grow from step to step (measured on data/scenes/iced_gallop.ini
+ * past 500 elements: the stiffest basis vector, the torsional mode's modal derivative, localizes at
+ * the node next to a support and its h omega grows with the mesh, 6.1 up to 500 elements, 8.9 at
+ * 800, 11 at 1000; there the error went from 0.1 to 1 in five linear steps and the rod's energy at
+ * element 0 then was not finite). */
+static int linear_step(gal_rom *m, double h)
+{
+    int r = m->r, st;
+    double rs, raw;
+    newmark(m, h);
+    if ((st = gal_rom_eval_internal(m, m->x1, m->fi1, NULL))) return st;
+    for (int k = 0; k < r; k++) m->fe1[k] = m->hfe == h ? 2 * m->fe[k] - m->fe_prev[k] : m->fe[k];
+    if (!(linear_error(m) <= GAL_ROM_LINEAR_TOL)) return LINEAR_REJECT;
+    for (int pass = 0; pass < 2; pass++) {
+        if (!isfinite(residual(m, &rs, &raw))) return gal_error(GAL_EFAIL, "reduced model: the residual is not finite");
+        carry_correction(m, h);
+        if (!pass && (st = gal_rom_eval_external(m, m->t + h, m->x1, m->v1, m->fe1))) return st;
+    }
+    return GAL_OK;
 }
 
 /* The loads at Newton pass `it` into m->fe1: at every pass, or (once: o.loads_once) extrapolated
