@@ -1,10 +1,14 @@
 /* sim_fixture.h: a scene read with its overrides and set up for gal_run (gal_sim_setup_init), the
- * start of the tests that run a shipped or tests/rom/ scene; include after check.h. 0 when both
+ * start of the tests that run a shipped or tests/rom/ scene, and its reduced model started
+ * (rom_fixture); include after check.h. 0 when both
  * succeed; otherwise a failed CHECK naming the scene and the library's message, and -1. */
 #ifndef GALLOP_TESTS_SIM_FIXTURE_H
 #define GALLOP_TESTS_SIM_FIXTURE_H
 
 #include "gallop/base/error.h"
+#include "gallop/loads/loads.h"
+#include "gallop/reduced/rom.h"
+#include "gallop/run/forward.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
 
@@ -15,6 +19,24 @@ static int sim_fixture(gal_scene *sc, gal_sim_setup *s, const char *path, const 
         return -1;
     }
     return 0;
+}
+
+/* The reduced model of a set-up scene (gal_forward to GAL_STAGE_REDUCED) with the options *ro, its
+ * damping the scene's, under the scene's loads, started from the scene's start state; NULL after a
+ * failed CHECK naming the library's message. */
+static inline gal_rom *rom_fixture(gal_sim_setup *s, gal_rom_opts *ro)
+{
+    gal_data *d = s->data;
+    if (gal_forward(s->model, d, GAL_STAGE_REDUCED)) {
+        CHECK(0, "%s", gal_error_message());
+        return NULL;
+    }
+    ro->damping = d->damping;
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_rom *m = gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, ro, &F);
+    if (m && gal_rom_start(m, 0, d->q_start, d->v_start)) gal_rom_free(m), m = NULL;
+    CHECK(m != NULL, "%s", gal_error_message());
+    return m;
 }
 
 #endif

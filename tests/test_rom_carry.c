@@ -7,6 +7,7 @@
 #include "gallop/run/forward.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
+#include "sim_fixture.h"
 
 #define SPAN "tests/rom/drake_200_level_dshape.ini"
 #define SECONDS 150
@@ -23,23 +24,14 @@ static int run(const char *scene, double h, int carry, double rho_inf, double se
 {
     gal_scene sc;
     gal_sim_setup s;
-    if (gal_scene_load(&sc, scene, NULL, 0, "data/conductors.csv") ||
-        gal_sim_setup_init(&s, &sc, 1)) {
-        CHECK(0, "%s", gal_error_message());
-        return 1;
-    }
-    gal_data *d = s.data;
-    int st = gal_forward(s.model, d, GAL_STAGE_REDUCED);
-    CHECK(st == GAL_OK, "%s", gal_error_message());
+    if (sim_fixture(&sc, &s, scene, NULL, 0)) return 1;
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
-    ro.h = h, ro.rho_inf = rho_inf, ro.damping = d->damping, ro.newton_carry = carry;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
-    gal_rom *m = st ? NULL : gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
-    CHECK(st || m != NULL, "%s", gal_error_message());
+    ro.h = h, ro.rho_inf = rho_inf, ro.newton_carry = carry;
+    gal_rom *m = rom_fixture(&s, &ro);
+    int st = GAL_OK;
     if (m) {
-        st = gal_rom_start(m, 0, d->q_start, d->v_start);
-        if (!st) st = gal_rom_advance(m, seconds);
+        st = gal_rom_advance(m, seconds);
         CHECK(st == GAL_OK, "%s", gal_error_message());
         o->r = m->r < 64 ? m->r : 64;
         memcpy(o->x, m->x, (size_t)o->r * sizeof(double));

@@ -10,6 +10,7 @@
 #include "gallop/run/forward.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
+#include "sim_fixture.h"
 
 typedef struct {
     int elements;             /* the mesh */
@@ -30,24 +31,15 @@ static int run_opts(int elements, double seconds, int hyper_loads, int loads_onc
     const char *ov[] = {e};
     gal_scene sc;
     gal_sim_setup s;
-    if (gal_scene_load(&sc, "data/scenes/iced_gallop.ini", ov, 1, "data/conductors.csv") ||
-        gal_sim_setup_init(&s, &sc, 1)) {
-        CHECK(0, "%s", gal_error_message());
-        return 1;
-    }
-    gal_data *d = s.data;
-    int st = gal_forward(s.model, d, GAL_STAGE_REDUCED);
-    CHECK(st == GAL_OK, "%s", gal_error_message());
+    if (sim_fixture(&sc, &s, "data/scenes/iced_gallop.ini", ov, 1)) return 1;
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
-    ro.h = 0.01, ro.rho_inf = 0.9, ro.damping = d->damping, ro.hyper_loads = hyper_loads;
+    ro.h = 0.01, ro.rho_inf = 0.9, ro.hyper_loads = hyper_loads;
     ro.loads_once = loads_once, ro.one_pass = one_pass;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
-    gal_rom *m = st ? NULL : gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
-    CHECK(st || m != NULL, "%s", gal_error_message());
+    gal_rom *m = rom_fixture(&s, &ro);
+    int st = GAL_OK;
     if (m) {
-        st = gal_rom_start(m, 0, d->q_start, d->v_start);
-        if (!st) st = gal_rom_advance(m, seconds);
+        st = gal_rom_advance(m, seconds);
         CHECK(st == GAL_OK, "%s", gal_error_message());
         gal_rom_hyper_info hi;
         gal_rom_hyper_get_info(m, &hi);
