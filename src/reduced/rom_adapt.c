@@ -303,20 +303,6 @@ static void weigh(const gal_rom_adapt *a, const gal_rom_check *chk, const double
         }
 }
 
-/* y minus its part in m's basis (V^T M V = I); Mc: n of scratch, p: m->r. */
-static void deflate(const gal_rom *m, double *y, double *Mc, double *p)
-{
-    int n = m->ndof;
-    gal_rod_mass_mult(m->rod, y, Mc);
-    for (int k = 0; k < m->r; k++) {
-        double s = 0;
-        for (int d = 0; d < n; d++) s += m->V[(size_t)k * n + d] * Mc[d];
-        p[k] = s;
-    }
-    for (int k = 0; k < m->r; k++)
-        for (int d = 0; d < n; d++) y[d] -= p[k] * m->V[(size_t)k * n + d];
-}
-
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work,
             const int *lwork, int *info);
 
@@ -356,7 +342,7 @@ static int orbit_samples(gal_rom_adapt *a, gal_rom *old, const gal_rom_check *ch
             if (st || (st = gal_rom_residual_dir(old, &c, y))) break;
         }
         if (gal_rom_residual_family(old, y, (gal_family)f, y)) return -1; /* out of memory */
-        deflate(old, y, work, work + n);
+        gal_rom_deflate(old, y, work, work + n);
         weigh(a, chk, y, Yw + (size_t)ns * n);
     }
     return ns;

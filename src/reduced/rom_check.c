@@ -211,14 +211,7 @@ int gal_rom_cubic(gal_rom *m, const double *eta, double err[GAL_FAMILY_COUNT])
     double *w = calloc((size_t)3 * n + m->r, sizeof(double)), *c = w + n, *y = c + n, *p = y + n;
     if (!w) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the cubic check");
     if ((st = cubic_add(m, eta, -1.0 / 6, w, c, y)) || (st = gal_chol_solve(m->chol0, c, c))) goto done;
-    gal_rod_mass_mult(rod, c, y); /* c -= V V^T M c */
-    for (int k = 0; k < m->r; k++) {
-        double a = 0;
-        for (int d = 0; d < n; d++) a += m->V[(size_t)k * n + d] * y[d];
-        p[k] = a;
-    }
-    for (int k = 0; k < m->r; k++)
-        for (int d = 0; d < n; d++) c[d] -= p[k] * m->V[(size_t)k * n + d];
+    gal_rom_deflate(m, c, y, p);
     double acc[GAL_FAMILY_COUNT] = {0};
     accumulate(m, c, c, rod->mdiag, acc);
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) err[f] = sqrt(acc[f]);
@@ -245,6 +238,19 @@ double gal_rom_taut_share(const gal_rom *m)
         if (t0 > 0) share = fmin(share, gal_rom_element_tension(m, end[k]) / t0);
     }
     return share;
+}
+
+void gal_rom_deflate(const gal_rom *m, double *y, double *Mc, double *p)
+{
+    int n = m->ndof;
+    gal_rod_mass_mult(m->rod, y, Mc);
+    for (int k = 0; k < m->r; k++) {
+        double s = 0;
+        for (int d = 0; d < n; d++) s += m->V[(size_t)k * n + d] * Mc[d];
+        p[k] = s;
+    }
+    for (int k = 0; k < m->r; k++)
+        for (int d = 0; d < n; d++) y[d] -= p[k] * m->V[(size_t)k * n + d];
 }
 
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work,

@@ -308,6 +308,10 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du);
  * cycle, the rod's mode a constant 6.3436), and the rod's internal force pumped a 1.6-deg 6.38-Hz
  * line into it (BENCHMARKS.md, issue 13, helper line). */
 int gal_rom_residual_family(gal_rom *m, const double *du, gal_family f, double *df);
+
+/* y (ndof) minus its part in m's basis (V^T M V = I): y -= V V^T M y; Mc (ndof) and p (r) scratch
+ * (rom_check.c). */
+void gal_rom_deflate(const gal_rom *m, double *y, double *Mc, double *p);
 /* The basis's next term, an a-priori error indicator (the check of rom_adapt.h): the third-order
  * part of the static response along the modes' displacement w = Phi eta (nmodes entries),
  * c = -(1/6) K0^-1 D2K[w, w] w (D2K: the second directional derivative of the tangent, by central
