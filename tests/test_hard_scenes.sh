@@ -156,15 +156,19 @@ if zero_heap run twist_accumulation.full simulate "$H/twist_accumulation.ini" --
     awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation full: max |twist| $tw deg" \
         || bad "twist_accumulation full: max |twist| only $tw deg"
 fi
-# The reduced model (issue 13: coupling recomputed from the rod, self-checked) on 1 torsional mode
-# and its modal derivatives does not follow several turns: its self-check finds the residual grown
-# in the torsional family within the first seconds and stops (exit 1, the family and the keys
-# named, nothing written), where the identified model gave up on a step size. When it follows the
-# twist (adaptation: issue 13's remaining part), the twist check below must hold.
+# The reduced model (issue 13: coupling recomputed from the rod, self-checked) may refuse, its
+# self-check finding the residual grown in the torsional family (exit 1, the family and the keys
+# named, nothing written); when it follows, it must turn past 360 deg as the full model does. Both
+# are read the same way, the largest |twist| of trace.csv: the twist p-p over the summary's steady
+# window is not a reproducible figure of this case (the twist wanders by whole turns): the full
+# model's own reads 575 deg, 585 with the reference BLAS, 183 with simulation.newton_tolerance =
+# 1e-6 and 692 at 96 elements (measured 2026-11-24), so no bound on it tells a right reduced run
+# from a wrong one.
 if may_refuse="residual grew to .* in the torsional family" run twist_accumulation.reduced simulate "$H/twist_accumulation.ini" --model reduced; then
-    tw=$(json twist_amplitude_deg "$tmp/twist_accumulation.reduced/summary.json")
-    awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation reduced: twist p-p $tw deg" \
-        || bad "twist_accumulation reduced: exit 0 with twist p-p only $tw deg where the full model turns past 360"
+    tw=$(awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i ~ /_twist_deg$/) c[i]=1}
+         NR>1{for(i in c){v=$i<0?-$i:$i; if(v>mx)mx=v}} END{printf "%.1f", mx}' "$tmp/twist_accumulation.reduced/trace.csv")
+    awk -v t="$tw" 'BEGIN{exit !(t > 360)}' && ok "twist_accumulation reduced: max |twist| $tw deg" \
+        || bad "twist_accumulation reduced: exit 0 with max |twist| only $tw deg where the full model turns past 360"
 fi
 
 # one hour of the reduced model: no drift. The steady vertical amplitude (RMS at mid-span) of
