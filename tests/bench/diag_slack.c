@@ -288,6 +288,18 @@ static void plain(gal_data *d, double h, const double *X, int nx, int hyper, dou
     free(q);
 }
 
+/* A run's least and largest support tension, and the vertical displacement's at probe pz. */
+static void extremes(const gal_sim_result *r, int pz, double T[2], double z[2])
+{
+    T[0] = z[0] = INFINITY, T[1] = z[1] = -INFINITY;
+    for (long i = 0; i < r->nsamples; i++) {
+        T[0] = fmin(T[0], fmin(r->tension[2 * i], r->tension[2 * i + 1]));
+        T[1] = fmax(T[1], fmax(r->tension[2 * i], r->tension[2 * i + 1]));
+        double zz = r->trace[(size_t)i * 4 * r->nprobe + 4 * pz + 1];
+        z[0] = fmin(z[0], zz), z[1] = fmax(z[1], zz);
+    }
+}
+
 int main(int argc, char **argv)
 {
     double A = argc > 1 ? atof(argv[1]) : 8;
@@ -461,29 +473,16 @@ int main(int argc, char **argv)
     }
     if (dorun) {
         gal_sim_result rf, rr;
-        gal_sim_run(&s, GAL_MODEL_FULL, &rf);
-        double fT[2] = {INFINITY, -INFINITY}, fz[2] = {INFINITY, -INFINITY};
-        for (long i = 0; i < rf.nsamples; i++) {
-            fT[0] = fmin(fT[0], fmin(rf.tension[2 * i], rf.tension[2 * i + 1]));
-            fT[1] = fmax(fT[1], fmax(rf.tension[2 * i], rf.tension[2 * i + 1]));
-        }
+        if (gal_sim_run(&s, GAL_MODEL_FULL, &rf)) { fprintf(stderr, "%s\n", gal_error_message()); return 1; }
         int pz = -1;
         for (int k = 0; k < rf.nprobe; k++)
             if (fabs(rf.probe[k] - 0.5) < 1e-9) pz = k;
         if (pz < 0) pz = 0;
-        for (long i = 0; i < rf.nsamples; i++) {
-            double z = rf.trace[(size_t)i * 4 * rf.nprobe + 4 * pz + 1];
-            fz[0] = fmin(fz[0], z), fz[1] = fmax(fz[1], z);
-        }
+        double fT[2], fz[2], T[2], z[2];
+        extremes(&rf, pz, fT, fz);
         printf("RUN full: T %.0f .. %.0f N, probe %.2f vertical %.3f .. %.3f m\n", fT[0], fT[1], rf.probe[pz], fz[0], fz[1]);
         if (!gal_sim_run(&s, GAL_MODEL_REDUCED, &rr)) { /* the CLI's path (integrator_rom.c) */
-            double T[2] = {INFINITY, -INFINITY}, z[2] = {INFINITY, -INFINITY};
-            for (long i = 0; i < rr.nsamples; i++) {
-                T[0] = fmin(T[0], fmin(rr.tension[2 * i], rr.tension[2 * i + 1]));
-                T[1] = fmax(T[1], fmax(rr.tension[2 * i], rr.tension[2 * i + 1]));
-                double zz = rr.trace[(size_t)i * 4 * rr.nprobe + 4 * pz + 1];
-                z[0] = fmin(z[0], zz), z[1] = fmax(z[1], zz);
-            }
+            extremes(&rr, pz, T, z);
             printf("SIM reduced basis %d->%d: T %.0f .. %.0f N (largest %+.1f%%), vertical %.3f .. %.3f m (%+.1f%%, %+.1f%%), "
                    "residual %.3f, valid %d %s\n", rr.basis_start, rr.basis, T[0], T[1], 100 * (T[1] - fT[1]) / fT[1], z[0], z[1],
                    100 * (z[0] - fz[0]) / fabs(fz[0]), 100 * (z[1] - fz[1]) / fabs(fz[1]), rr.residual_max, rr.valid, rr.invalid_why);
@@ -497,13 +496,7 @@ int main(int argc, char **argv)
             gal_rom_sim_default_opts(&o);
             o.extra = gn[g] ? S + (size_t)g0[g] * n : NULL, o.nextra = gn[g];
             if (gal_rom_sim_run(&s, &o, &rr, &info)) { printf("RUN %s: %s\n", gl[g], gal_error_message()); continue; }
-            double T[2] = {INFINITY, -INFINITY}, z[2] = {INFINITY, -INFINITY};
-            for (long i = 0; i < rr.nsamples; i++) {
-                T[0] = fmin(T[0], fmin(rr.tension[2 * i], rr.tension[2 * i + 1]));
-                T[1] = fmax(T[1], fmax(rr.tension[2 * i], rr.tension[2 * i + 1]));
-                double zz = rr.trace[(size_t)i * 4 * rr.nprobe + 4 * pz + 1];
-                z[0] = fmin(z[0], zz), z[1] = fmax(z[1], zz);
-            }
+            extremes(&rr, pz, T, z);
             printf("RUN %-9s basis %d->%d: T %.0f .. %.0f N (largest %+.1f%%), vertical %.3f .. %.3f m (%+.1f%%, %+.1f%%), "
                    "residual %.3f, taut share %.3f, valid %d\n",
                    gl[g], info.basis_start, info.basis, T[0], T[1], 100 * (T[1] - fT[1]) / fT[1], z[0], z[1],
