@@ -123,8 +123,8 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     free(fm);
     if (st) { gal_rom_adapt_clear(&a); return st; }
     a.policy = o->policy, a.relax = o->relax;
-    if (o->replay) gal_rom_adapt_replay_from(&a, d->q_start, NULL);
-    st = gal_rom_start(m, 0.0, d->q_start, NULL);
+    if (o->replay) gal_rom_adapt_replay_from(&a, d->q_start, d->v_start);
+    st = gal_rom_start(m, 0.0, d->q_start, d->v_start);
     info->build_time_s = res->build_time_s = gal_wall_time() - tb;
     info->basis_start = m->r;
     info->valid = 1;
