@@ -59,6 +59,7 @@ static int init(mesh *M, const char *path, int nel)
     M->ro.h = dt_out / ceil(dt_out / h - 1e-9);
     M->ro.rho_inf = M->sc.simulation.rho_inf;
     M->ro.damping = dt->damping;
+    M->ro.k0 = dt->eq.k0; /* as the command line: the statics' K0 and its factorization */
     memset(&M->F, 0, sizeof M->F);
     if (dt->loads.table) M->F.eval = gal_loads_full, M->F.element = gal_loads_element, M->F.ctx = (void *)&dt->loads;
     return 0;
