@@ -268,8 +268,8 @@ static int tangent_at_equilibrium(gal_rom *m)
 }
 
 /* The set-up that does not depend on the loads, the damping or the step (m->rod, m->o filled;
- * m->force empty): K0 and its factorization, the basis, V^T K0 V, the force scales and the rod's
- * sample. */
+ * m->force empty, or the loads when known: then their sample is trained in the same pass as the
+ * rod's): K0 and its factorization, the basis, V^T K0 V, the force scales and the rod's sample. */
 static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, const int *sel, int nsel)
 {
     const gal_rod *rod = m->rod;
@@ -317,8 +317,9 @@ done:
 }
 
 /* The rest of the model on its set-up: the options o (the set-up's kept), the loads, the damping
- * Cr = V^T C V, the step's constants, the loads' sample, and the start at rest at q_eq. */
-static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, double t0)
+ * Cr = V^T C V, the step's constants, the loads' sample (unless trained with the rod's: the set-up
+ * built with the loads known), and the start at rest at q_eq. */
+static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, double t0, int trained)
 {
     gal_rom_opts keep = m->o;
     if (o) m->o = *o;
@@ -330,7 +331,7 @@ static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, dou
     double rho = m->o.rho_inf;
     m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
     m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);
-    if (m->hyper && (st = gal_rom_hyper_loads(m))) return st;
+    if (m->hyper && !trained && (st = gal_rom_hyper_loads(m))) return st;
     gal_rom_reconstruct_at(m, NULL, NULL); /* every entry of m->q: the sample's evaluations write only theirs */
     if ((st = gal_rom_start(m, 0.0, m->q_eq, NULL))) return st;
     m->build_time_s = gal_wall_time() - t0;
@@ -396,12 +397,15 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     gal_rom_opts od;
     if (!o) gal_rom_default_opts(&od), o = &od;
     gal_rom *m = NULL;
+    int trained = 0; /* the loads' sample trained with the rod's */
     if (o->setup && setup_matches(o->setup, rod, q_eq, md, sel, nsel, o)) {
         if (!(m = copy_setup(o->setup))) return NULL;
     } else {
         if (!(m = calloc(1, sizeof *m))) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return NULL; }
         m->rod = rod, m->o = *o;
+        if (force) m->force = *force; /* both samples from one pass over the training states */
         if (build_setup(m, q_eq, md, sel, nsel)) return gal_rom_free(m);
+        trained = 1;
     }
-    return finish(m, o, force, t0) ? gal_rom_free(m) : m;
+    return finish(m, o, force, t0, trained) ? gal_rom_free(m) : m;
 }
