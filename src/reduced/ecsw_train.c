@@ -275,8 +275,12 @@ static void project_states(const gal_rom *m, const double *G, int ns, double *b)
 /* The targets at training state s (at time t, reconstructed in m->q, m->vq; B the tangent basis)
  * of the samples not fitted on every element: the force of every element at once (assembled: one
  * evaluation of the rod, one of the loads). With G (the model's constant basis) its free part is
- * gathered into G[set] + s n, projected for every state at once after (project_states, then
- * correct); else projected here, both in one pass, and corrected. */
+ * gathered into G[set] + (s % TARGET_CHUNK) n, projected a chunk of states at a time (columns:
+ * project_states); else projected here, both in one pass. The rod's are corrected after. */
+#define TARGET_CHUNK 4 /* the states whose targets are projected together: V read once for them, a
+                        * small buffer (a whole-mesh buffer for every state, 0.8 MB at 1000
+                        * elements, made glibc give the heap's top back and fault it in again at
+                        * every build: more than the pass saved) */
 static int targets(gal_rom *m, train_set *T, int nt, int s, double t, const double *B, double *const *G)
 {
     const int *fq = m->rod->free_q;
@@ -293,7 +297,7 @@ static int targets(gal_rom *m, train_set *T, int nt, int s, double t, const doub
         }
         m->hyper->train_full_evals++;
         if (G && !st)
-            for (int d = 0; d < n; d++) G[T[i].set][(size_t)s * n + d] = f[fq[d]];
+            for (int d = 0; d < n; d++) G[T[i].set][(size_t)(s % TARGET_CHUNK) * n + d] = f[fq[d]];
     }
     if (st || G || (!b[0] && !b[1])) return st;
     if (b[0]) project_free(m, B, m->gq, b[1] ? m->fq : NULL, b[0], b[1]);
@@ -341,7 +345,7 @@ static int columns(gal_rom *m, train_set *T, int nt, const double *Vt)
     for (int i = 0; i < nt; i++) loads |= T[i].set == 1;
     double *G[2] = {NULL, NULL}; /* the targets' free parts, state by state, with the constant basis */
     for (int i = 0; i < nt && !st && !m->qm; i++)
-        if (!T[i].all && !(G[T[i].set] = malloc((size_t)h->ns * n * sizeof(double))))
+        if (!T[i].all && !(G[T[i].set] = malloc((size_t)TARGET_CHUNK * n * sizeof(double))))
             st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
     for (int s = 0; s < h->ns && !st; s++) {
         const double *x = h->snap + (size_t)s * (2 * r + 1), *v = x + r, t = x[2 * r];
@@ -357,10 +361,12 @@ static int columns(gal_rom *m, train_set *T, int nt, const double *Vt)
                 h->train_element_evals++;
             }
         if (!st) st = targets(m, T, nt, s, t, B, m->qm ? NULL : G);
+        int s0 = s - s % TARGET_CHUNK; /* a full chunk, or the last states: projected */
+        for (int i = 0; i < nt && !st && !m->qm && (s - s0 == TARGET_CHUNK - 1 || s == h->ns - 1); i++)
+            if (!T[i].all) project_states(m, G[T[i].set], s - s0 + 1, T[i].b + (size_t)s0 * r);
     }
     for (int i = 0; i < nt && !st; i++) {
         if (T[i].all) continue;
-        if (!m->qm) project_states(m, G[T[i].set], h->ns, T[i].b);
         if (T[i].set == 0)
             for (int s = 0; s < h->ns; s++) correct(m, h->snap + (size_t)s * (2 * r + 1), Kl, T[i].b + (size_t)s * r);
     }
