@@ -159,6 +159,33 @@ int gal_chol_factor_pencil(gal_chol *f, const gal_csc *K, double sigma, const ga
     return factor_filled(f);
 }
 
+gal_chol *gal_chol_clone(const gal_chol *f)
+{
+    gal_chol *g = calloc(1, sizeof *g);
+    if (!g) {
+        gal_error(GAL_ENOMEM, "CHOLMOD: out of memory copying a factorization");
+        return NULL;
+    }
+    cholmod_start(&g->c);
+    g->c.print = 0;
+    g->c.error_handler = NULL;
+    g->c.nmethods = 1; /* as gal_chol_alloc leaves it: A is handed over already permuted */
+    g->c.method[0].ordering = CHOLMOD_NATURAL;
+    g->c.postorder = 0;
+    g->n = f->n, g->negative_pivots = f->negative_pivots;
+    size_t nnz = (size_t)f->A->nzmax;
+    g->A = cholmod_copy_sparse(f->A, &g->c);
+    g->L = cholmod_copy_factor(f->L, &g->c);
+    g->B = cholmod_zeros(f->n, 1, CHOLMOD_REAL, &g->c);
+    g->perm = malloc((size_t)f->n * sizeof(int)), g->map = malloc(nnz * sizeof(int));
+    if (!g->A || !g->L || !g->B || !g->perm || !g->map) {
+        gal_error(GAL_ENOMEM, "CHOLMOD: out of memory copying the factorization of a %d x %d matrix", f->n, f->n);
+        return gal_chol_free(g);
+    }
+    memcpy(g->perm, f->perm, (size_t)f->n * sizeof(int)), memcpy(g->map, f->map, nnz * sizeof(int));
+    return g;
+}
+
 int gal_chol_solve(gal_chol *f, const double *b, double *x)
 {
     double *B = f->B->x;
@@ -184,6 +211,16 @@ gal_tangent *gal_tangent_alloc(gal_csc **K, gal_chol **chol, const double *q, in
     memcpy(qc, q, (size_t)nq * sizeof(double));
     t->K = *K, t->chol = *chol, t->q = qc, t->nq = nq, t->L0 = L0;
     *K = NULL, *chol = NULL;
+    return t;
+}
+
+gal_tangent *gal_tangent_copy(const gal_csc *K, const gal_chol *chol, const double *q, int nq, double L0)
+{
+    gal_csc *Kc = gal_csc_clone(K); /* the pattern */
+    if (Kc) memcpy(Kc->val, K->val, (size_t)K->nnz * sizeof(double));
+    gal_chol *c = Kc ? gal_chol_clone(chol) : NULL;
+    gal_tangent *t = c ? gal_tangent_alloc(&Kc, &c, q, nq, L0) : NULL;
+    if (!t) gal_csc_free(Kc), gal_chol_free(c);
     return t;
 }
 

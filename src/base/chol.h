@@ -36,6 +36,9 @@ int gal_chol_factor(gal_chol *f, const gal_csc *K, double shift, const double *d
 /* Factor K - sigma M, M on K's pattern (the same as gal_chol_factor of that matrix, without
  * forming it). */
 int gal_chol_factor_pencil(gal_chol *f, const gal_csc *K, double sigma, const gal_csc *M);
+/* A copy of f: its analysis, its last numeric factorization and counters at 0; solves with it give
+ * the same numbers as with f. NULL when out of memory (with the message). */
+gal_chol *gal_chol_clone(const gal_chol *f);
 /* x = (K + shift D)^-1 b; x and b may be the same array. */
 int gal_chol_solve(gal_chol *f, const double *b, double *x);
 
@@ -54,6 +57,9 @@ typedef struct gal_tangent {
 /* Takes over K and chol (NULL in the callers' hands afterwards) and copies q; NULL when out of
  * memory (K and chol are then left where they were). */
 gal_tangent *gal_tangent_alloc(gal_csc **K, gal_chol **chol, const double *q, int nq, double L0);
+/* The same from copies of K and chol (gal_chol_clone: the numeric factor kept too); NULL when out
+ * of memory. */
+gal_tangent *gal_tangent_copy(const gal_csc *K, const gal_chol *chol, const double *q, int nq, double L0);
 gal_tangent *gal_tangent_free(gal_tangent *t);
 
 #endif

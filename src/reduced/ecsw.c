@@ -202,10 +202,13 @@ int gal_rom_hyper_build(gal_rom *m)
         st = gal_rom_hyper_training_state(m, s, x, x + r);
         if (!st) st = add_snapshot(h, r, x, x + r, 10.0 + 7.3 * s);
     }
-    /* the rod's sample, then the loads' (apart: the first does not depend on the wind) */
-    if (!st) st = gal_rom_hyper_fit(m, 0);
+    /* the rod's sample, then the loads' (apart: the first does not depend on the wind); both in one
+     * pass over the training states when the loads are known already (gal_rom_alloc computing its
+     * own set-up), the same samples */
+    h->loads = m->force.eval && m->force.element && m->o.hyper_loads;
+    if (!st) st = h->loads ? gal_rom_hyper_fit_all(m) : gal_rom_hyper_fit(m, 0);
     if (!st) st = constants(m);
-    if (!st) st = gal_rom_hyper_loads(m);
+    if (!st) st = sample_entries(m);
 done:
     free(x);
     return st;

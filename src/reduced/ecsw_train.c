@@ -106,8 +106,11 @@ static int candidates(const gal_rom *m, int set, int *cand)
 }
 
 /* Column e of a snapshot block: B_e^T g_e for element e's local gradient g (11 or 7 entries
- * mapped like gal_rod_element_q) at the reconstructed state m->q; B the tangent basis there. */
-static void project_local(const gal_rom *m, const double *B, const int *qi, const double *g, int nloc, double *col)
+ * mapped like gal_rod_element_q) at the reconstructed state m->q; B the tangent basis there,
+ * column-major (n x r), or row-major (r entries a dof: Bt, the same sums in the same order, without
+ * striding over the whole basis for each entry) when Bt != NULL. */
+static void project_local(const gal_rom *m, const double *B, const double *Bt, const int *qi, const double *g, int nloc,
+                          double *col)
 {
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r;
@@ -117,11 +120,28 @@ static void project_local(const gal_rom *m, const double *B, const int *qi, cons
         int qa = qi[nloc == 7 ? load_to_el[a] : a];
         int d = qa < 0 ? -1 : rod->dof[qa];
         if (d < 0 || g[a] == 0) continue;
-        for (int k = 0; k < r; k++) col[k] += B[(size_t)k * n + d] * g[a];
+        if (Bt) {
+            const double *row = Bt + (size_t)d * r;
+            for (int k = 0; k < r; k++) col[k] += row[k] * g[a];
+        } else
+            for (int k = 0; k < r; k++) col[k] += B[(size_t)k * n + d] * g[a];
     }
 }
 
-int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr)
+/* Vt = V^T (r entries a dof, row-major) of the model's constant basis; NULL on the manifold (its
+ * tangent basis moves with the state) or when out of memory (then V itself is read). */
+static double *basis_rows(const gal_rom *m)
+{
+    int n = m->ndof, r = m->r;
+    double *Vt = m->qm ? NULL : malloc((size_t)n * r * sizeof(double));
+    if (Vt)
+        for (int d = 0; d < n; d++)
+            for (int k = 0; k < r; k++) Vt[(size_t)d * r + k] = m->V[(size_t)k * n + d];
+    return Vt;
+}
+
+/* gal_rom_hyper_element_reduced with V's rows from Vt (basis_rows) when not NULL. */
+static int element_reduced(gal_rom *m, const double *Vt, int e, double *col, double *Kr)
 {
     const gal_rod *rod = m->rod;
     int n = m->ndof, r = m->r, NQ = GAL_ROD_ELEMENT_NQ, qi[GAL_ROD_ELEMENT_NQ], d[GAL_ROD_ELEMENT_NQ];
@@ -129,19 +149,25 @@ int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr)
     gal_rod_element_q(rod, e, qi);
     int st = gal_rod_element_eval(rod, e, m->q, &U, g, H);
     if (st) return st;
-    project_local(m, m->V, qi, g, NQ, col);
+    project_local(m, m->V, Vt, qi, g, NQ, col);
     for (int a = 0; a < NQ; a++) d[a] = qi[a] < 0 ? -1 : rod->dof[qi[a]];
     for (int a = 0; a < NQ; a++) { /* T = H V_e */
         for (int j = 0; j < r; j++) T[a * r + j] = 0;
         for (int b = 0; b < NQ; b++)
-            if (d[b] >= 0 && H[a * NQ + b] != 0)
-                for (int j = 0; j < r; j++) T[a * r + j] += H[a * NQ + b] * m->V[(size_t)j * n + d[b]];
+            if (d[b] >= 0 && H[a * NQ + b] != 0) {
+                double hab = H[a * NQ + b];
+                if (Vt) {
+                    const double *row = Vt + (size_t)d[b] * r;
+                    for (int j = 0; j < r; j++) T[a * r + j] += hab * row[j];
+                } else
+                    for (int j = 0; j < r; j++) T[a * r + j] += hab * m->V[(size_t)j * n + d[b]];
+            }
     }
     memset(Kr, 0, (size_t)r * r * sizeof(double));
     for (int a = 0; a < NQ; a++)
         if (d[a] >= 0)
             for (int i = 0; i < r; i++) {
-                double vi = m->V[(size_t)i * n + d[a]];
+                double vi = Vt ? Vt[(size_t)d[a] * r + i] : m->V[(size_t)i * n + d[a]];
                 for (int j = 0; j < r; j++) Kr[i * r + j] += vi * T[a * r + j];
             }
     if (m->qm)
@@ -150,6 +176,11 @@ int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr)
                 for (int i = 0; i < r; i++)
                     for (int j = 0; j < r; j++) Kr[i * r + j] += g[a] * m->qm->Th[(size_t)m->qm->pair[i * r + j] * n + d[a]];
     return GAL_OK;
+}
+
+int gal_rom_hyper_element_reduced(gal_rom *m, int e, double *col, double *Kr)
+{
+    return element_reduced(m, NULL, e, col, Kr);
 }
 
 /* The work of one sample's fit (0: the rod's energy, 1: the loads): its candidates, the snapshot
@@ -200,33 +231,89 @@ int gal_rom_exact_force(gal_rom *m, const double *x, double *f)
     return GAL_OK;
 }
 
-/* The targets at training state s (at time t, reconstructed in m->q, m->vq; B the tangent basis)
- * of the samples not fitted on every element: the projected force of every element at once
- * (assembled: one evaluation of the rod, one of the loads, projected in one pass), for the rod's
- * energy less the equilibrium's force and its linear part (Kl: V^T K0 V, and the curvature on the
- * manifold). */
-static int targets(gal_rom *m, train_set *T, int nt, int s, const double *x, double t, const double *B, const double *Kl)
+/* b[s r + k] = V_k^T G_s for the ns gathered vectors G_s (n each) and V's r columns: four columns
+ * against two states at a time (eight independent sums), in one pass over those columns (V read
+ * once, not once a state); each sum runs over the entries in order, the round-off of
+ * project_free's (gal_rom_exact_force's). */
+static void project_states(const gal_rom *m, const double *G, int ns, double *b)
 {
-    int r = m->r, st = GAL_OK;
+    int n = m->ndof, r = m->r, k = 0;
+    for (; k + 4 <= r; k += 4) {
+        const double *c0 = m->V + (size_t)k * n, *c1 = c0 + n, *c2 = c1 + n, *c3 = c2 + n;
+        for (int s = 0; s < ns; s += 2) {
+            const double *g = G + (size_t)s * n, *h = s + 1 < ns ? g + n : g; /* an odd last: twice */
+            double s0 = 0, s1 = 0, s2 = 0, s3 = 0, t0 = 0, t1 = 0, t2 = 0, t3 = 0;
+            for (int d = 0; d < n; d++) {
+                double a = g[d], e = h[d];
+                s0 += c0[d] * a, s1 += c1[d] * a, s2 += c2[d] * a, s3 += c3[d] * a;
+                t0 += c0[d] * e, t1 += c1[d] * e, t2 += c2[d] * e, t3 += c3[d] * e;
+            }
+            double *bs = b + (size_t)s * r + k;
+            bs[0] = s0, bs[1] = s1, bs[2] = s2, bs[3] = s3;
+            if (s + 1 < ns) bs[r] = t0, bs[r + 1] = t1, bs[r + 2] = t2, bs[r + 3] = t3;
+        }
+    }
+    for (; k < r; k++) { /* the last columns one at a time, against four states at a time */
+        const double *c0 = m->V + (size_t)k * n;
+        int s = 0;
+        for (; s + 4 <= ns; s += 4) {
+            const double *g0 = G + (size_t)s * n, *g1 = g0 + n, *g2 = g1 + n, *g3 = g2 + n;
+            double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+            for (int d = 0; d < n; d++) s0 += c0[d] * g0[d], s1 += c0[d] * g1[d], s2 += c0[d] * g2[d], s3 += c0[d] * g3[d];
+            b[(size_t)s * r + k] = s0, b[(size_t)(s + 1) * r + k] = s1;
+            b[(size_t)(s + 2) * r + k] = s2, b[(size_t)(s + 3) * r + k] = s3;
+        }
+        for (; s < ns; s++) {
+            const double *g = G + (size_t)s * n;
+            double s0 = 0;
+            for (int d = 0; d < n; d++) s0 += c0[d] * g[d];
+            b[(size_t)s * r + k] = s0;
+        }
+    }
+}
+
+/* The targets at training state s (at time t, reconstructed in m->q, m->vq; B the tangent basis)
+ * of the samples not fitted on every element: the force of every element at once (assembled: one
+ * evaluation of the rod, one of the loads). With G (the model's constant basis) its free part is
+ * gathered into G[set] + (s % TARGET_CHUNK) n, projected a chunk of states at a time (columns:
+ * project_states); else projected here, both in one pass. The rod's are corrected after. */
+#define TARGET_CHUNK 4 /* the states whose targets are projected together: V read once for them, a
+                        * small buffer (a whole-mesh buffer for every state, 0.8 MB at 1000
+                        * elements, made glibc give the heap's top back and fault it in again at
+                        * every build: more than the pass saved) */
+static int targets(gal_rom *m, train_set *T, int nt, int s, double t, const double *B, double *const *G)
+{
+    const int *fq = m->rod->free_q;
+    int r = m->r, n = m->ndof, st = GAL_OK;
     double *b[2] = {NULL, NULL};
     for (int i = 0; i < nt && !st; i++) {
         if (T[i].all) continue;
         b[T[i].set] = T[i].b + (size_t)s * r;
+        double *f = T[i].set == 0 ? m->gq : m->fq;
         if (T[i].set == 0) st = gal_rod_eval(m->rod, m->q, NULL, m->gq, NULL);
         else {
             memset(m->fq, 0, (size_t)m->nq * sizeof(double));
             st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
         }
         m->hyper->train_full_evals++;
+        if (G && !st)
+            for (int d = 0; d < n; d++) G[T[i].set][(size_t)(s % TARGET_CHUNK) * n + d] = f[fq[d]];
     }
-    if (st || (!b[0] && !b[1])) return st;
+    if (st || G || (!b[0] && !b[1])) return st;
     if (b[0]) project_free(m, B, m->gq, b[1] ? m->fq : NULL, b[0], b[1]);
     else project_free(m, B, m->fq, NULL, b[1], NULL);
-    for (int k = 0; k < r && b[0]; k++) {
-        b[0][k] -= m->hyper->F0[k];
-        for (int j = 0; j < r; j++) b[0][k] -= Kl[k * r + j] * x[j];
-    }
     return GAL_OK;
+}
+
+/* The rod's targets at state x (b: r) less the equilibrium's force and its linear part (Kl: V^T K0
+ * V, and the curvature on the manifold). */
+static void correct(const gal_rom *m, const double *x, const double *Kl, double *b)
+{
+    int r = m->r;
+    for (int k = 0; k < r; k++) {
+        b[k] -= m->hyper->F0[k];
+        for (int j = 0; j < r; j++) b[k] -= Kl[k * r + j] * x[j];
+    }
 }
 
 /* Kl for the rod's targets: the exact linear part of the whole rod (into Kl, r x r). */
@@ -243,7 +330,7 @@ static int linear_part(gal_rom *m, double *Kl)
 /* The raw snapshot columns of every sample's candidates at every training state, and the targets
  * of those not fitted on every element (all: the targets are summed later), in one pass over the
  * training states: each state reconstructed once for both samples. */
-static int columns(gal_rom *m, train_set *T, int nt)
+static int columns(gal_rom *m, train_set *T, int nt, const double *Vt)
 {
     gal_rom_hyper *h = m->hyper;
     const gal_rod *rod = m->rod;
@@ -254,8 +341,12 @@ static int columns(gal_rom *m, train_set *T, int nt)
             if (!(Kl = malloc((size_t)r * r * sizeof(double)))) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
             st = linear_part(m, Kl);
         }
-    int loads = 0; /* the velocity is the loads' alone */
+    int loads = 0, n = m->ndof; /* the velocity is the loads' alone */
     for (int i = 0; i < nt; i++) loads |= T[i].set == 1;
+    double *G[2] = {NULL, NULL}; /* the targets' free parts, state by state, with the constant basis */
+    for (int i = 0; i < nt && !st && !m->qm; i++)
+        if (!T[i].all && !(G[T[i].set] = malloc((size_t)TARGET_CHUNK * n * sizeof(double))))
+            st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
     for (int s = 0; s < h->ns && !st; s++) {
         const double *x = h->snap + (size_t)s * (2 * r + 1), *v = x + r, t = x[2 * r];
         gal_rom_reconstruct_at(m, x, loads ? v : NULL);
@@ -266,18 +357,26 @@ static int columns(gal_rom *m, train_set *T, int nt)
                 gal_rod_element_q(rod, e, qi);
                 if (T[i].set == 0) st = gal_rod_element_eval(rod, e, m->q, &U, g, NULL);
                 else st = m->force.element(m->force.ctx, t, m->q, m->vq, e, g);
-                project_local(m, B, qi, g, T[i].set == 0 ? NQ : 7, T[i].A + (size_t)c * rows + (size_t)s * r);
+                project_local(m, B, Vt, qi, g, T[i].set == 0 ? NQ : 7, T[i].A + (size_t)c * rows + (size_t)s * r);
                 h->train_element_evals++;
             }
-        if (!st) st = targets(m, T, nt, s, x, t, B, Kl);
+        if (!st) st = targets(m, T, nt, s, t, B, m->qm ? NULL : G);
+        int s0 = s - s % TARGET_CHUNK; /* a full chunk, or the last states: projected */
+        for (int i = 0; i < nt && !st && !m->qm && (s - s0 == TARGET_CHUNK - 1 || s == h->ns - 1); i++)
+            if (!T[i].all) project_states(m, G[T[i].set], s - s0 + 1, T[i].b + (size_t)s0 * r);
     }
-    free(Kl);
+    for (int i = 0; i < nt && !st; i++) {
+        if (T[i].all) continue;
+        if (T[i].set == 0)
+            for (int s = 0; s < h->ns; s++) correct(m, h->snap + (size_t)s * (2 * r + 1), Kl, T[i].b + (size_t)s * r);
+    }
+    free(Kl), free(G[0]), free(G[1]);
     return st;
 }
 
 /* Less each candidate's force and linear part at the equilibrium (the rod's sample: the fit is of
  * the nonlinear remainder); with every element a candidate, the targets are the columns' sums. */
-static int nonlinear_part(gal_rom *m, int set, const int *cand, int nc, int all, double *A, double *b)
+static int nonlinear_part(gal_rom *m, const double *Vt, int set, const int *cand, int nc, int all, double *A, double *b)
 {
     gal_rom_hyper *h = m->hyper;
     int r = m->r, rows = h->ns * r;
@@ -287,7 +386,7 @@ static int nonlinear_part(gal_rom *m, int set, const int *cand, int nc, int all,
         if (!jz) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
         gal_rom_reconstruct_at(m, NULL, NULL);
         for (int c = 0; c < nc; c++) {
-            int st = gal_rom_hyper_element_reduced(m, cand[c], col, h->Kc);
+            int st = element_reduced(m, Vt, cand[c], col, h->Kc);
             if (st) { free(jz); return st; }
             for (int s = 0; s < h->ns; s++) {
                 const double *x = h->snap + (size_t)s * (2 * r + 1);
@@ -412,14 +511,15 @@ static int fit(gal_rom *m, int nt, const int *sets)
         if (!T[i].cand || T[i].nc < 0 || !T[i].A || !T[i].b) st = GAL_ENOMEM;
     }
     if (st || !grp || !w) st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
-    if (!st) st = columns(m, T, nt);
+    double *Vt = st ? NULL : basis_rows(m);
+    if (!st) st = columns(m, T, nt, Vt);
     for (int i = 0; i < nt && !st; i++) {
-        st = nonlinear_part(m, T[i].set, T[i].cand, T[i].nc, T[i].all, T[i].A, T[i].b);
+        st = nonlinear_part(m, Vt, T[i].set, T[i].cand, T[i].nc, T[i].all, T[i].A, T[i].b);
         if (!st) st = weigh(m, T[i].set, T[i].nc, T[i].A, T[i].b);
         if (!st) st = solve(m, T + i, w, grp);
     }
     for (int i = 0; i < nt; i++) free(T[i].cand), free(T[i].A), free(T[i].b);
-    free(grp), free(w);
+    free(grp), free(w), free(Vt);
     return st;
 }
 

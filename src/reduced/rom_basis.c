@@ -239,9 +239,37 @@ static void force_scales(gal_rom *m)
     m->ffloor = 20 * 2.2e-16 * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0] * cs;
 }
 
+/* 1 when t is the rod's tangent at m->q_eq with its factorization (gal_rom_opts.k0). */
+static int k0_fits(const gal_rom *m, const gal_tangent *t)
+{
+    const gal_rod *rod = m->rod;
+    return t && t->K && t->K->val && t->chol && t->chol->L && t->nq == rod->nq && t->K->n == rod->K->n &&
+           t->K->nnz == rod->K->nnz && t->chol->n == rod->ndof && t->L0 == rod->p.unstretched_length &&
+           !memcmp(t->q, m->q_eq, (size_t)rod->nq * sizeof(double));
+}
+
+/* K0 at the equilibrium and its factorization into m->K0, m->chol0: the handed-over ones
+ * (o.k0, the statics' stability check: the same numbers) or evaluated, analysed and factorized. */
+static int tangent_at_equilibrium(gal_rom *m)
+{
+    const gal_rod *rod = m->rod;
+    const gal_tangent *t = m->o.k0;
+    m->o.k0 = NULL; /* not kept past the build */
+    if (k0_fits(m, t)) {
+        memcpy(m->K0->val, t->K->val, (size_t)rod->K->nnz * sizeof(double));
+        return (m->chol0 = gal_chol_clone(t->chol)) ? GAL_OK : GAL_ENOMEM;
+    }
+    int st = gal_rod_eval(rod, m->q_eq, NULL, m->gq, m->K0);
+    if (st) return st;
+    if (!(m->chol0 = gal_chol_alloc(rod->K))) return GAL_ENOMEM;
+    if (gal_chol_factor(m->chol0, m->K0, 0, NULL))
+        return gal_error(GAL_EFAIL, "reduced model: the tangent at the equilibrium is not positive definite (%s)", gal_error_message());
+    return GAL_OK;
+}
+
 /* The set-up that does not depend on the loads, the damping or the step (m->rod, m->o filled;
- * m->force empty): K0 and its factorization, the basis, V^T K0 V, the force scales and the rod's
- * sample. */
+ * m->force empty, or the loads when known: then their sample is trained in the same pass as the
+ * rod's): K0 and its factorization, the basis, V^T K0 V, the force scales and the rod's sample. */
 static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, const int *sel, int nsel)
 {
     const gal_rod *rod = m->rod;
@@ -257,12 +285,7 @@ static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, cons
     m->setup_shape = md->shape, m->setup_nsel = nsel;
     memcpy(m->setup_sel, sel, (size_t)nsel * sizeof(int));
     memcpy(m->q_eq, q_eq, (size_t)m->nq * sizeof(double));
-    if ((st = gal_rod_eval(rod, q_eq, NULL, m->gq, m->K0))) goto done;
-    if (!(m->chol0 = gal_chol_alloc(rod->K))) { st = GAL_ENOMEM; goto done; }
-    if (gal_chol_factor(m->chol0, m->K0, 0, NULL)) {
-        st = gal_error(GAL_EFAIL, "reduced model: the tangent at the equilibrium is not positive definite (%s)", gal_error_message());
-        goto done;
-    }
+    if ((st = tangent_at_equilibrium(m))) goto done;
     for (int k = 0; k < nsel; k++) {
         if (sel[k] < 0 || sel[k] >= md->n) { st = gal_error(GAL_EINPUT, "reduced model: mode %d not computed", sel[k]); goto done; }
         m->omega2[k] = md->mode[sel[k]].omega * md->mode[sel[k]].omega;
@@ -294,12 +317,13 @@ done:
 }
 
 /* The rest of the model on its set-up: the options o (the set-up's kept), the loads, the damping
- * Cr = V^T C V, the step's constants, the loads' sample, and the start at rest at q_eq. */
-static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, double t0)
+ * Cr = V^T C V, the step's constants, the loads' sample (unless trained with the rod's: the set-up
+ * built with the loads known), and the start at rest at q_eq. */
+static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, double t0, int trained)
 {
     gal_rom_opts keep = m->o;
     if (o) m->o = *o;
-    m->o.mean_load = NULL, m->o.extra = NULL, m->o.nextra = keep.nextra, m->o.setup = NULL;
+    m->o.mean_load = NULL, m->o.extra = NULL, m->o.nextra = keep.nextra, m->o.setup = NULL, m->o.k0 = NULL;
     if (force) m->force = *force;
     int r = m->r, st = GAL_OK;
     memset(m->Cr, 0, (size_t)r * r * sizeof(double));
@@ -307,7 +331,7 @@ static int finish(gal_rom *m, const gal_rom_opts *o, const gal_force *force, dou
     double rho = m->o.rho_inf;
     m->am = (2 * rho - 1) / (rho + 1), m->af = rho / (rho + 1);
     m->gamma = 0.5 - m->am + m->af, m->beta = 0.25 * (1 - m->am + m->af) * (1 - m->am + m->af);
-    if (m->hyper && (st = gal_rom_hyper_loads(m))) return st;
+    if (m->hyper && !trained && (st = gal_rom_hyper_loads(m))) return st;
     gal_rom_reconstruct_at(m, NULL, NULL); /* every entry of m->q: the sample's evaluations write only theirs */
     if ((st = gal_rom_start(m, 0.0, m->q_eq, NULL))) return st;
     m->build_time_s = gal_wall_time() - t0;
@@ -373,12 +397,15 @@ gal_rom *gal_rom_alloc(const gal_rod *rod, const double *q_eq, const gal_modes *
     gal_rom_opts od;
     if (!o) gal_rom_default_opts(&od), o = &od;
     gal_rom *m = NULL;
+    int trained = 0; /* the loads' sample trained with the rod's */
     if (o->setup && setup_matches(o->setup, rod, q_eq, md, sel, nsel, o)) {
         if (!(m = copy_setup(o->setup))) return NULL;
     } else {
         if (!(m = calloc(1, sizeof *m))) { gal_error(GAL_ENOMEM, "reduced model: out of memory"); return NULL; }
         m->rod = rod, m->o = *o;
+        if (force) m->force = *force; /* both samples from one pass over the training states */
         if (build_setup(m, q_eq, md, sel, nsel)) return gal_rom_free(m);
+        trained = 1;
     }
-    return finish(m, o, force, t0) ? gal_rom_free(m) : m;
+    return finish(m, o, force, t0, trained) ? gal_rom_free(m) : m;
 }

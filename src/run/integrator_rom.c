@@ -88,6 +88,7 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     ro.scheme = o->rom_scheme;
     if (o->newton_tol > 0) ro.newton_tol = o->newton_tol;
     ro.damping = d->damping; /* the structural damping of the pipeline */
+    ro.k0 = d->eq.k0;        /* the statics' K0 and its factorization */
     ro.hyper_check_interval = 0; /* the sample's check comes with the self-check (rom_advance) */
     gal_force F = {0};
     if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */

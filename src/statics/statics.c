@@ -23,6 +23,7 @@ void gal_statics_default_opts(gal_statics_opts *o)
 void gal_equilibrium_clear(gal_equilibrium *eq)
 {
     gal_tangent_free(eq->tangent);
+    gal_tangent_free(eq->k0);
     gal_rod_free(eq->rod);
     free(eq->q);
     memset(eq, 0, sizeof *eq);
@@ -403,6 +404,8 @@ int gal_statics_solve(const gal_rod_params *p, gal_statics_spec spec, double val
     eq->factorizations = w.chol->factorizations;
     /* the stability check's tangent at eq->q and its analysis, for the modes (none when out of
      * memory: they then make their own) */
+    if (!st && !(eq->rod->p.torsion && !eq->rod->p.twist_clamped)) /* check_stable's shift 0: K0's factor */
+        eq->k0 = gal_tangent_copy(w.K, w.chol, eq->q, eq->rod->nq, eq->rod->p.unstretched_length);
     if (!st) eq->tangent = gal_tangent_alloc(&w.K, &w.chol, eq->q, eq->rod->nq, eq->rod->p.unstretched_length);
     ws_free(&w);
 fail:

@@ -74,6 +74,7 @@ static int one(const char *path, const char *const *ov, int nov, int nel, double
     ro.h = dt_out / ceil(dt_out / h - 1e-9);
     ro.rho_inf = sc.simulation.rho_inf;
     ro.damping = dt->damping;
+    ro.k0 = dt->eq.k0; /* as the command line: the statics' K0 and its factorization */
     if (manifold >= 0) ro.manifold = manifold;
     gal_force F = {0};
     if (dt->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&dt->loads;

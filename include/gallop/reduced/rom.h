@@ -111,6 +111,11 @@ typedef struct gal_rom_opts {
                              * equilibrium, modes and selection: copied instead of computed when it
                              * matches (gal_rom_alloc); its factorization of K0 is read by the model,
                              * so it must outlive it; not owned, not kept; NULL: computed */
+    const struct gal_tangent *k0; /* the tangent at q_eq with its numeric factorization (the
+                             * statics': gal_equilibrium.k0): its values and a copy of its factor
+                             * are taken instead of evaluating, analysing and factorizing K0 again
+                             * (the same numbers) when it is of this rod at q_eq; not owned, not
+                             * kept past the build; NULL: computed */
 } gal_rom_opts;
 
 /* Per family (gal_family order: vertical, horizontal, torsional, axial): the full equations'

@@ -39,6 +39,11 @@ typedef struct gal_equilibrium {
     struct gal_tangent *tangent; /* owned, or NULL: the tangent stiffness at q and the symbolic
                                   * analysis of its pattern that the stability check left, which
                                   * gal_modes_find_eq takes over (src/base/chol.h) */
+    struct gal_tangent *k0;      /* owned, or NULL: the same tangent with a copy of its numeric
+                                  * factorization (the stability check's, unshifted: a clamped or
+                                  * absent twist), kept for the reduced model's set-up (rom.h
+                                  * gal_rom_opts.k0), which would otherwise evaluate, analyse and
+                                  * factorize it again */
 } gal_equilibrium;
 
 void gal_statics_default_opts(gal_statics_opts *o);
