@@ -8,6 +8,7 @@
 #include "base/chol.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -428,8 +429,11 @@ static int third_derivatives(const gal_rom *m, int nm, double *X)
             for (int s = 0; s < 4 && !st; s++) {
                 memcpy(q, m->q_eq, (size_t)nq * sizeof(double));
                 for (int d = 0; d < n; d++) q[rod->free_q[d]] += sg[s][0] * ej * pj[d] + sg[s][1] * ek * pk[d];
-                if ((st = gal_rod_eval(rod, q, NULL, NULL, K[s])))
-                    gal_error(st, "reduced model: the third-order modal derivatives: %s", gal_error_message());
+                if ((st = gal_rod_eval(rod, q, NULL, NULL, K[s]))) {
+                    char why[256];
+                    snprintf(why, sizeof why, "%s", gal_error_message());
+                    gal_error(st, "reduced model: the third-order modal derivatives: %s", why);
+                }
             }
             for (int i = 0; i <= j && !st; i++, id++) {
                 double *y = X + (size_t)id * n;
@@ -448,7 +452,8 @@ static int third_derivatives(const gal_rom *m, int nm, double *X)
 }
 
 /* The cubic growth (rom_adapt.h): the basis back to the initial selection and extra vectors, plus
- * the third-order modal derivatives of the selected modes; *mode, *corr: 0 and their count. */
+ * the third-order modal derivatives of the selected modes (their count into *corr); GAL_ROM_ELIMIT
+ * with a message, nothing changed, when they are in the basis already or pass the cap. */
 static int third_growth(gal_rom_adapt *a, const gal_rom *old, const gal_rom_check *chk, int f, int *corr)
 {
     int nm = a->nsel0, nt = nm * (nm + 1) * (nm + 2) / 6, n = a->rod->ndof;
