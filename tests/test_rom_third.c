@@ -8,7 +8,8 @@
  *    basis (before: the vertical part it trips on);
  *  - the replay's observations are those of a model allocated on the grown basis and run from the
  *    start through the same output times, to the bit;
- *  - a second cubic trip is not grown on (GAL_ROM_ELIMIT, naming the third-order derivatives). */
+ *  - a second cubic trip, or a residual's, is not grown on (GAL_ROM_ELIMIT, naming the third-order
+ *    derivatives). */
 #include "check.h"
 #include "sim_fixture.h"
 #include "gallop.h"
@@ -128,6 +129,13 @@ static void test_third(void)
     st = gal_rom_adapt_grow(&a, &m, &chk, du);
     CHECK(st == GAL_ROM_ELIMIT && m->r == r1 && strstr(gal_error_message(), "third-order"),
           "a second cubic trip: status %d, basis %d: %s", st, m->r, gal_error_message());
+    /* nor a residual's trip: no correction or mode past the third-order set */
+    st = gal_rom_adapt_residual(&a, m, &chk, du);
+    for (int f = 0; f < GAL_FAMILY_COUNT; f++) chk.cubic[f] = 0;
+    chk.rel[GAL_FAMILY_TORSIONAL] = chk.max = 0.5;
+    if (!st) st = gal_rom_adapt_grow(&a, &m, &chk, du);
+    CHECK(st == GAL_ROM_ELIMIT && m->r == r1 && a.nevents == 3 && strstr(gal_error_message(), "does not grow past"),
+          "a residual's trip past the third-order set: status %d, basis %d: %s", st, m->r, gal_error_message());
 done:
     gal_rom_free(ref);
     gal_rom_free(m);

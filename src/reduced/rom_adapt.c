@@ -492,6 +492,10 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
     double t = old->t, *q = NULL;
     if (cubic) {
         if ((st = third_growth(a, old, chk, f, &corr))) return st;
+    } else if (a->third) { /* past the third-order set, a correction or mode is not grown (rom_adapt.h) */
+        gal_error(GAL_EFAIL, "the basis (%d vectors) holds the modes' third-order modal derivatives and the %s "
+                  "residual is still %.3g (the basis does not grow past them)", old->r, gal_family_names[f], chk->max);
+        return GAL_ROM_ELIMIT;
     } else {
         corr = (a->policy & GAL_ROM_ADD_CORRECTION) && du ? (a->orbit_vectors > 0 ? a->orbit_vectors : 1) : 0;
         /* the correction alone first; the mode when a correction has not sufficed */
