@@ -3,9 +3,12 @@
  * failing check's time (or, without a start, restarted from the reconstructed state). */
 #include "gallop/reduced/rom_adapt.h"
 #include "gallop/base/core.h"
+#include "gallop/base/sparse.h"
 #include "gallop/base/vec3.h"
+#include "base/chol.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -35,7 +38,8 @@ int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const 
     if (!(a->extra = malloc((size_t)rod->ndof * (GAL_ROM_EVENTS_MAX * 2 + n0) * sizeof(double))))
         return gal_error(GAL_ENOMEM, "reduced model: out of memory");
     if (n0) memcpy(a->extra, a->o.extra, (size_t)rod->ndof * n0 * sizeof(double));
-    a->nextra = n0;
+    a->nextra = a->nextra0 = n0;
+    a->nsel0 = nsel;
     a->o.extra = NULL, a->o.nextra = 0;
     double mt = 0; /* the twist's mass along the span */
     if (rod->p.torsion)
@@ -403,6 +407,75 @@ static int orbit_correction(gal_rom_adapt *a, gal_rom *old, const gal_rom_check 
     return GAL_OK;
 }
 
+/* The third-order modal derivatives of m's first nm modes (M-orthonormal, V's first columns) into
+ * X (ndof x nm (nm+1)(nm+2)/6): -K0^-1 (d2K/d eta_j d eta_k) phi_i, i <= j <= k, the tangent's
+ * second directional derivative by central differences over 2 cm of each mode's largest entry (a
+ * second difference needs a larger step than the modal derivatives' first one). */
+static int third_derivatives(const gal_rom *m, int nm, double *X)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, nq = m->nq, st = GAL_OK, id = 0;
+    const double sg[4][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+    gal_csc *K[4] = {NULL, NULL, NULL, NULL};
+    double *q = malloc((size_t)nq * sizeof(double)), *w = malloc((size_t)2 * n * sizeof(double));
+    for (int s = 0; s < 4; s++) K[s] = gal_csc_clone(rod->K);
+    if (!q || !w || !K[0] || !K[1] || !K[2] || !K[3]) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    for (int j = 0; j < nm && !st; j++)
+        for (int k = j; k < nm && !st; k++) {
+            const double *pj = m->V + (size_t)j * n, *pk = m->V + (size_t)k * n;
+            double mj = 0, mk = 0;
+            for (int d = 0; d < n; d++) mj = fmax(mj, fabs(pj[d])), mk = fmax(mk, fabs(pk[d]));
+            double ej = 2e-2 / mj, ek = 2e-2 / mk;
+            for (int s = 0; s < 4 && !st; s++) {
+                memcpy(q, m->q_eq, (size_t)nq * sizeof(double));
+                for (int d = 0; d < n; d++) q[rod->free_q[d]] += sg[s][0] * ej * pj[d] + sg[s][1] * ek * pk[d];
+                if ((st = gal_rod_eval(rod, q, NULL, NULL, K[s]))) {
+                    char why[256];
+                    snprintf(why, sizeof why, "%s", gal_error_message());
+                    gal_error(st, "reduced model: the third-order modal derivatives: %s", why);
+                }
+            }
+            for (int i = 0; i <= j && !st; i++, id++) {
+                double *y = X + (size_t)id * n;
+                memset(y, 0, (size_t)n * sizeof(double));
+                for (int s = 0; s < 4; s++) {
+                    gal_csc_symv(K[s], m->V + (size_t)i * n, w);
+                    for (int d = 0; d < n; d++) y[d] -= sg[s][0] * sg[s][1] * w[d] / (4 * ej * ek);
+                }
+                memcpy(w + n, y, (size_t)n * sizeof(double));
+                st = gal_chol_solve(m->chol0, w + n, y);
+            }
+        }
+    for (int s = 0; s < 4; s++) gal_csc_free(K[s]);
+    free(q); free(w);
+    return st;
+}
+
+/* The cubic growth (rom_adapt.h): the basis back to the initial selection and extra vectors, plus
+ * the third-order modal derivatives of the selected modes (their count into *corr); GAL_ROM_ELIMIT
+ * with a message, nothing changed, when they are in the basis already or pass the cap. */
+static int third_growth(gal_rom_adapt *a, const gal_rom *old, const gal_rom_check *chk, int f, int *corr)
+{
+    int nm = a->nsel0, nt = nm * (nm + 1) * (nm + 2) / 6, n = a->rod->ndof;
+    if (a->third || nm > old->nmodes || basis_size(a, nm, a->nextra0 + nt) > GAL_ROM_BASIS_CAP) {
+        gal_error(GAL_EFAIL, "the basis (%d vectors) lacks the modes' third-order coupling: the cubic part of the "
+                  "%s motion outside it is %.3g of the motion (the basis cannot grow by it%s)", old->r,
+                  gal_family_names[f], chk->cubic[f],
+                  a->third ? ": its third-order modal derivatives are in it" : ": their set passes the cap");
+        return GAL_ROM_ELIMIT;
+    }
+    double *X = malloc((size_t)n * (a->nextra0 + nt + GAL_ROM_EVENTS_MAX * 2) * sizeof(double));
+    if (!X) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    memcpy(X, a->extra, (size_t)n * a->nextra0 * sizeof(double));
+    int st = third_derivatives(old, nm, X + (size_t)n * a->nextra0);
+    if (st) { free(X); return st; }
+    free(a->extra);
+    a->extra = X, a->nextra = a->nextra0 + nt, a->nsel = nm, a->third = nt;
+    memset(a->corrected, 0, sizeof a->corrected);
+    *corr = nt;
+    return GAL_OK;
+}
+
 int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, const double *du)
 {
     gal_rom *old = *m;
@@ -414,40 +487,47 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
                   a->nevents, old->r, gal_family_names[f], chk->max);
         return GAL_ROM_ELIMIT;
     }
-    if (f <= GAL_FAMILY_HORIZONTAL && chk->rel[f] == chk->cubic[f] / GAL_ROM_CUBIC_SHARE) {
-        gal_error(GAL_EFAIL, "the basis (%d vectors) lacks the modes' third-order coupling: the cubic part of the "
-                  "%s motion outside it is %.3g of the motion (the basis cannot grow by it)", old->r,
-                  gal_family_names[f], chk->cubic[f]);
+    int st = GAL_OK, mode = -1, corr = 0, cubic = f <= GAL_FAMILY_HORIZONTAL && chk->rel[f] == chk->cubic[f] / GAL_ROM_CUBIC_SHARE;
+    int nsel_was = a->nsel, nextra_was = a->nextra;
+    double t = old->t, *q = NULL;
+    if (cubic) {
+        if ((st = third_growth(a, old, chk, f, &corr))) return st;
+    } else if (a->third) { /* past the third-order set, a correction or mode is not grown (rom_adapt.h) */
+        gal_error(GAL_EFAIL, "the basis (%d vectors) holds the modes' third-order modal derivatives and the %s "
+                  "residual is still %.3g (the basis does not grow past them)", old->r, gal_family_names[f], chk->max);
         return GAL_ROM_ELIMIT;
+    } else {
+        corr = (a->policy & GAL_ROM_ADD_CORRECTION) && du ? (a->orbit_vectors > 0 ? a->orbit_vectors : 1) : 0;
+        /* the correction alone first; the mode when a correction has not sufficed */
+        int want_mode = (a->policy & GAL_ROM_ADD_MODE) && a->nsel < GAL_ROM_MODES_MAX && (!corr || a->corrected[f]);
+        mode = want_mode ? next_mode(a, f) : -1;
+        if (want_mode && mode < 0 && more_modes(a, (gal_family)f) == GAL_OK) mode = next_mode(a, f);
+        if (mode >= 0 && basis_size(a, a->nsel + 1, a->nextra + corr) > GAL_ROM_BASIS_CAP) mode = -1;
+        while (corr && basis_size(a, a->nsel + (mode >= 0), a->nextra + corr) > GAL_ROM_BASIS_CAP) corr--;
+        if (mode < 0 && !corr) {
+            gal_error(GAL_EFAIL, "the basis grew to %d vectors (%d modes, %d corrections; at most %d) and the %s "
+                      "residual is still %.3g", old->r, a->nsel, a->nextra, GAL_ROM_BASIS_CAP, gal_family_names[f],
+                      chk->max);
+            return GAL_ROM_ELIMIT;
+        }
     }
-    int corr = (a->policy & GAL_ROM_ADD_CORRECTION) && du ? (a->orbit_vectors > 0 ? a->orbit_vectors : 1) : 0;
-    /* the correction alone first; the mode when a correction has not sufficed */
-    int want_mode = (a->policy & GAL_ROM_ADD_MODE) && a->nsel < GAL_ROM_MODES_MAX && (!corr || a->corrected[f]);
-    int mode = want_mode ? next_mode(a, f) : -1;
-    if (want_mode && mode < 0 && more_modes(a, (gal_family)f) == GAL_OK) mode = next_mode(a, f);
-    if (mode >= 0 && basis_size(a, a->nsel + 1, a->nextra + corr) > GAL_ROM_BASIS_CAP) mode = -1;
-    while (corr && basis_size(a, a->nsel + (mode >= 0), a->nextra + corr) > GAL_ROM_BASIS_CAP) corr--;
-    if (mode < 0 && !corr) {
-        gal_error(GAL_EFAIL, "the basis grew to %d vectors (%d modes, %d corrections; at most %d) and the %s "
-                  "residual is still %.3g", old->r, a->nsel, a->nextra, GAL_ROM_BASIS_CAP, gal_family_names[f],
-                  chk->max);
-        return GAL_ROM_ELIMIT;
-    }
-    double t = old->t, *q = malloc((size_t)2 * a->rod->nq * sizeof(double));
-    if (!q) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    if (!(q = malloc((size_t)2 * a->rod->nq * sizeof(double)))) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
     gal_rom_reconstruct(old, q, q + a->rod->nq); /* the state at the check, before the sampling */
-    int st = GAL_OK;
     long steps0 = old->steps;
-    if (corr && a->orbit_vectors > 0) st = orbit_correction(a, old, chk, du, f, &corr, a->extra + (size_t)a->nextra * n);
-    else if (corr) st = gal_rom_residual_family(old, du, (gal_family)f, a->extra + (size_t)a->nextra * n);
+    if (!cubic && corr && a->orbit_vectors > 0) st = orbit_correction(a, old, chk, du, f, &corr, a->extra + (size_t)a->nextra * n);
+    else if (!cubic && corr) st = gal_rom_residual_family(old, du, (gal_family)f, a->extra + (size_t)a->nextra * n);
     if (st) { free(q); return st; }
     a->orbit_steps += old->steps - steps0;
-    if (mode >= 0) a->sel[a->nsel++] = mode;
-    a->nextra += corr; /* the tripping family's correction alone (rom.h gal_rom_residual_family) */
+    if (!cubic) {
+        if (mode >= 0) a->sel[a->nsel++] = mode;
+        a->nextra += corr; /* the tripping family's correction alone (rom.h gal_rom_residual_family) */
+    }
     gal_rom *nw = build(a);
     st = nw ? GAL_OK : GAL_EFAIL;
     if (!st && a->q0) { /* run again from the run's start: no restart transient (rom_adapt.h) */
         st = gal_rom_start(nw, 0.0, a->q0, a->v0);
+        for (long i = 0; !st && a->replay_observe && a->replay_dt > 0 && i * a->replay_dt < t - 1e-3 * nw->o.h; i++)
+            if (!(st = gal_rom_advance(nw, i * a->replay_dt))) a->replay_observe(a->replay_ctx, nw, i);
         if (!st) st = gal_rom_advance(nw, t);
         if (!st) a->replayed_s += t;
     } else if (!st) {
@@ -455,13 +535,12 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
         if (!st && a->relax) st = relax(old, nw, q, q + a->rod->nq);
     }
     free(q);
-    if (st) {
+    if (st) { /* the old model stays (a cubic growth's basis is not restored: the run ends here) */
         gal_rom_free(nw);
-        if (mode >= 0) a->nsel--;
-        a->nextra -= corr;
+        if (!cubic) a->nsel = nsel_was, a->nextra = nextra_was;
         return st;
     }
-    if (corr && mode < 0) a->corrected[f]++;
+    if (!cubic && corr && mode < 0) a->corrected[f]++;
     gal_rom_event *e = &a->ev[a->nevents++];
     e->t_s = t, e->residual = chk->max, e->family = (gal_family)f;
     e->basis_before = old->r, e->basis_after = nw->r, e->mode_added = mode, e->corrections = corr;

@@ -103,5 +103,5 @@ static void full_state_of(const void *state, double *q, double *v)
 
 const gal_integrator_type gal_integrator_full = {
     "full", GAL_MODEL_FULL, GAL_STAGE_START, full_alloc, full_advance, full_observe, full_counters, full_free,
-    full_state_of,
+    full_state_of, NULL,
 };

@@ -73,6 +73,7 @@ static int integrate(const gal_integrator_type *T, void *state, gal_sim_result *
     for (long i = 0; i < ns && !st; i++) {
         if ((st = T->advance(state, res->time[i], res->time[ns - 1]))) break;
         T->observe(state, res->trace + (size_t)i * 4 * np, res->tension + 2 * i);
+        if (T->rewrite) T->rewrite(state, i, res->trace, res->tension);
         if (tty && i % 200 == 0) fprintf(stderr, "\r%s model: t = %.1f of %.1f s", T->name, res->time[i], res->time[ns - 1]);
     }
     if (tty) fprintf(stderr, "\n");

@@ -64,6 +64,10 @@ typedef struct gal_integrator_type {
     /* The full state reached, configuration and velocity (nq each); NULL: this integrator cannot
      * give it (then no run can continue from it). */
     void (*state)(const void *state, double *q, double *v);
+    /* Optional (NULL: never): after the observation of sample i, the samples before it that the
+     * integrator computed again since the last call (a reduced model grown and run again from the
+     * start, rom_adapt.h) written over trace (4 per probe each) and tension (2 each) from sample 0. */
+    void (*rewrite)(void *state, long i, double *trace, double *tension);
 } gal_integrator_type;
 
 extern const gal_integrator_type gal_integrator_full;
