@@ -263,27 +263,14 @@ static double wnorm(const double *rw, const double *a, int r)
  * gal_rom_exact_force's numbers. */
 static int exact_forces(gal_rom *m, double *fi, double *fl)
 {
-    const gal_rod *rod = m->rod;
-    int n = m->ndof;
     gal_rom_reconstruct_at(m, m->x, fl ? m->v : NULL);
-    int st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL);
+    int st = gal_rod_eval(m->rod, m->q, NULL, m->gq, NULL);
     if (!st && fl) {
         memset(m->fq, 0, (size_t)m->nq * sizeof(double));
         st = m->force.eval(m->force.ctx, m->t, m->q, m->vq, m->fq);
     }
-    if (st) return st;
-    const double *B = gal_rom_basis_at(m, m->x);
-    for (int k = 0; k < m->r; k++) {
-        const double *bk = B + (size_t)k * n;
-        double s = 0, sl = 0;
-        for (int d = 0; d < n; d++) {
-            s += bk[d] * m->gq[rod->free_q[d]];
-            if (fl) sl += bk[d] * m->fq[rod->free_q[d]];
-        }
-        fi[k] = s;
-        if (fl) fl[k] = sl;
-    }
-    return GAL_OK;
+    if (!st) gal_rom_project_free(m, gal_rom_basis_at(m, m->x), m->gq, fl ? m->fq : NULL, fi, fl);
+    return st;
 }
 
 int gal_rom_hyper_check(gal_rom *m, double *err)
