@@ -260,49 +260,45 @@ static double wnorm(const double *rw, const double *a, int r)
     return sqrt(s);
 }
 
-/* The exact projected loads at the current state into f (the full reconstruction in m->q, m->vq). */
-static int exact_loads(gal_rom *m, double *f)
+/* The exact projected internal force fi = B^T grad U(q) and, when fl, loads fl = B^T F(t, q, v) at
+ * the current state, from one full reconstruction of q and v (m->q, m->vq; the whole rod's gradient
+ * in m->gq, its loads in m->fq); B the tangent basis at x. Each sum runs over the dofs in order:
+ * gal_rom_exact_force's numbers. */
+static int exact_forces(gal_rom *m, double *fi, double *fl)
 {
-    const gal_rod *rod = m->rod;
-    int n = m->ndof;
-    gal_rom_reconstruct_at(m, m->x, m->v);
-    memset(m->fq, 0, (size_t)m->nq * sizeof(double));
-    int st = m->force.eval(m->force.ctx, m->t, m->q, m->vq, m->fq);
-    if (st) return st;
-    const double *B = gal_rom_basis_at(m, m->x);
-    for (int k = 0; k < m->r; k++) {
-        double s = 0;
-        for (int d = 0; d < n; d++) s += B[(size_t)k * n + d] * m->fq[rod->free_q[d]];
-        f[k] = s;
+    gal_rom_reconstruct_at(m, m->x, fl ? m->v : NULL);
+    int st = gal_rod_eval(m->rod, m->q, NULL, m->gq, NULL);
+    if (!st && fl) {
+        memset(m->fq, 0, (size_t)m->nq * sizeof(double));
+        st = m->force.eval(m->force.ctx, m->t, m->q, m->vq, m->fq);
     }
-    return GAL_OK;
+    if (!st) gal_rom_project_free(m, gal_rom_basis_at(m, m->x), m->gq, fl ? m->fq : NULL, fi, fl);
+    return st;
 }
 
 int gal_rom_hyper_check(gal_rom *m, double *err)
 {
     gal_rom_hyper *h = m->hyper;
     int r = m->r, st;
-    double e = 0, *fa = m->fr, *fb = m->res; /* scratch between steps */
+    double e = 0, *fa = m->fr, *fb = m->res, *fl = m->da; /* scratch between steps */
     if (err) *err = 0;
     if (!h) return GAL_OK;
-    /* the internal force, against its change from the equilibrium (the whole rod's gradient kept
-     * for the self-check at this state) */
+    /* the exact internal force (against its change from the equilibrium) and loads, the whole rod's
+     * gradient and loads kept for the self-check at this state */
     h->whole_has = 0;
-    if ((st = gal_rom_exact_force(m, m->x, fa))) return st;
+    if ((st = exact_forces(m, fa, h->loads ? fl : NULL))) return st;
     memcpy(h->whole_g, m->gq, (size_t)m->nq * sizeof(double));
+    if (h->loads) memcpy(h->whole_f, m->fq, (size_t)m->nq * sizeof(double));
     memcpy(h->whole_xv, m->x, (size_t)r * sizeof(double)), memcpy(h->whole_xv + r, m->v, (size_t)r * sizeof(double));
-    h->whole_t = m->t, h->whole_has = 1;
+    h->whole_t = m->t, h->whole_has = h->loads ? 2 : 1;
     if ((st = gal_rom_hyper_internal(m, m->x, fb, NULL))) return st;
     for (int k = 0; k < r; k++) fb[k] -= fa[k], fa[k] -= h->F0[k];
     double den = wnorm(h->set[0].rw, fa, r);
     if (den > 0) e = wnorm(h->set[0].rw, fb, r) / den;
     if (h->loads) {
-        if ((st = exact_loads(m, fa))) return st;
-        memcpy(h->whole_f, m->fq, (size_t)m->nq * sizeof(double));
-        h->whole_has = 2;
         if ((st = gal_rom_hyper_external(m, m->t, m->x, m->v, fb))) return st;
-        for (int k = 0; k < r; k++) fb[k] -= fa[k];
-        den = wnorm(h->set[1].rw, fa, r);
+        for (int k = 0; k < r; k++) fb[k] -= fl[k];
+        den = wnorm(h->set[1].rw, fl, r);
         if (den > 0) e = fmax(e, wnorm(h->set[1].rw, fb, r) / den);
     }
     h->check_error = e;

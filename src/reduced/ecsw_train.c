@@ -223,6 +223,11 @@ static void project_free(const gal_rom *m, const double *B, const double *g0, co
     }
 }
 
+void gal_rom_project_free(const gal_rom *m, const double *B, const double *g0, const double *g1, double *b0, double *b1)
+{
+    project_free(m, B, g0, g1, b0, b1);
+}
+
 int gal_rom_exact_force(gal_rom *m, const double *x, double *f)
 {
     int st = gal_rod_eval(m->rod, gal_rom_reconstruct_q(m, x), NULL, m->gq, NULL);

@@ -57,6 +57,11 @@ typedef struct gal_rom_hyper {
  * evaluated, when they are of m's current state (t, x, v) exactly; else 0 and *g = *f = NULL. */
 int gal_rom_hyper_whole(const gal_rom *m, const double **g, const double **f);
 
+/* b0 = B^T g0 and, when g1, b1 = B^T g1 over the free dofs of the configuration-sized g0, g1 (B: r
+ * columns of ndof, the tangent basis), four columns a pass, each sum over the dofs in order
+ * (ecsw_train.c: the numbers of one column at a time). */
+void gal_rom_project_free(const gal_rom *m, const double *B, const double *g0, const double *g1, double *b0, double *b1);
+
 /* Training state s (deterministic in s) into x and its velocity into v (r each). */
 int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);
 /* Fit sample `set` (0: the rod's energy, 1: the loads) by NNLS on the training states held (its

@@ -47,7 +47,7 @@ gal_rom *gal_rom_free(gal_rom *m)
     gal_rom_hyper_free(m);
     gal_rom_qm_free(m);
     gal_rom_irk_free(m);
-    free(m->fr); free(m->fe_prev);
+    free(m->fr); free(m->fe_prev); free(m->node_dir);
     free(m->V); free(m->omega2); free(m->Cr); free(m->K0r); free(m->q_eq);
     gal_csc_free(m->K0); gal_csc_free(m->K);
     free(m->x); free(m->v); free(m->a); free(m->fi); free(m->fe);

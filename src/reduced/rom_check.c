@@ -29,16 +29,34 @@ static int node_dof(const gal_rod *rod, int i)
     return d0 < 0 || rod->dof[3 * i + 1] != d0 + 1 || rod->dof[3 * i + 2] != d0 + 2 ? -1 : d0;
 }
 
+/* Each node's unit directions at the equilibrium, axial t, horizontal ey and vertical nv
+ * (gal_rod_node_directions at q_eq), 9 a node, made once and kept in m->node_dir; NULL when out of
+ * memory (with the message). */
+static const double *node_dirs(gal_rom *m)
+{
+    const gal_rod *rod = m->rod;
+    if (m->node_dir) return m->node_dir;
+    if (!(m->node_dir = malloc((size_t)9 * rod->nn * sizeof(double)))) {
+        gal_error(GAL_ENOMEM, "reduced model: out of memory for the check's directions");
+        return NULL;
+    }
+    for (int i = 0; i < rod->nn; i++) {
+        double *e = m->node_dir + 9 * i;
+        gal_rod_node_directions(rod, m->q_eq, i, e, e + 3, e + 6);
+    }
+    return m->node_dir;
+}
+
 /* Accumulate sum w y z per family of the free-dof vectors y, z into acc[family] (w: the diagonal
- * weights, 1 when NULL). */
-static void accumulate(const gal_rom *m, const double *y, const double *z, const double *mdiag, double *acc)
+ * weights, 1 when NULL; dir: node_dirs'). */
+static void accumulate(const gal_rom *m, const double *dir, const double *y, const double *z, const double *mdiag,
+                       double *acc)
 {
     const gal_rod *rod = m->rod;
     for (int i = 0; i < rod->nn; i++) {
         int d0 = node_dof(rod, i);
         if (d0 < 0) continue;
-        double t[3], ey[3], nv[3];
-        gal_rod_node_directions(m->rod, m->q_eq, i, t, ey, nv);
+        const double *t = dir + 9 * i, *ey = t + 3, *nv = t + 6;
         double yv = gal_dot3(nv, y + d0), yh = gal_dot3(ey, y + d0), ya = gal_dot3(t, y + d0);
         double zv = gal_dot3(nv, z + d0), zh = gal_dot3(ey, z + d0), za = gal_dot3(t, z + d0);
         double w = mdiag ? mdiag[d0] : 1;
@@ -81,7 +99,7 @@ static int scale_floors(gal_rom *m, double *load, double *du, double floor[GAL_F
         int st = gal_chol_solve(m->chol0, load, du);
         if (st) return st;
         double acc[GAL_FAMILY_COUNT] = {0};
-        accumulate(m, du, du, rod->mdiag, acc);
+        accumulate(m, m->node_dir, du, du, rod->mdiag, acc);
         floor[fam[k]] = sqrt(acc[fam[k]]);
     }
     memcpy(m->check_floor, floor, sizeof m->check_floor);
@@ -99,6 +117,8 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     const gal_rod *rod = m->rod;
     int n = m->ndof, st = GAL_OK;
     memset(chk, 0, sizeof *chk);
+    const double *dir = node_dirs(m);
+    if (!dir) return GAL_ENOMEM;
     double *w = calloc((size_t)(NTERM + 3) * n, sizeof(double));
     if (!w) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the residual");
     double *y[NTERM], *vf = w + NTERM * n, *af = vf + n, *u = af + n;
@@ -107,9 +127,9 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     gal_rom_full_rates(m, vf, af, u);
     gal_rod_mass_mult(rod, af, y[TERM_MA]);
     if (m->o.damping) gal_damping_apply(m->o.damping, vf, y[TERM_CV]); /* y is zeroed */
-    gal_rom_reconstruct(m, NULL, NULL); /* into m->q, m->vq */
     const double *wg, *wf; /* the sample check's at this state, when it came at the same step */
     gal_rom_hyper_whole(m, &wg, &wf);
+    if (!wg || (!wf && m->force.eval)) gal_rom_reconstruct(m, NULL, NULL); /* into m->q, m->vq */
     if (wg) memcpy(m->gq, wg, (size_t)m->nq * sizeof(double));
     else if ((st = gal_rod_eval(rod, m->q, NULL, m->gq, NULL))) goto done;
     if (wf) memcpy(m->fq, wf, (size_t)m->nq * sizeof(double));
@@ -120,16 +140,16 @@ int gal_rom_residual_dir(gal_rom *m, gal_rom_check *chk, double *du)
     gal_rod_gather(rod, m->gq, y[TERM_G]);
     gal_rod_gather(rod, m->fq, y[TERM_F]);
     for (int d = 0; d < n; d++) y[TERM_R][d] = y[TERM_MA][d] + y[TERM_CV][d] + y[TERM_G][d] - y[TERM_F][d];
-    accumulate(m, y[TERM_R], vf, NULL, chk->power[0]);
-    accumulate(m, y[TERM_F], vf, NULL, chk->power[1]);
-    accumulate(m, y[TERM_CV], vf, NULL, chk->power[2]);
+    accumulate(m, dir, y[TERM_R], vf, NULL, chk->power[0]);
+    accumulate(m, dir, y[TERM_F], vf, NULL, chk->power[1]);
+    accumulate(m, dir, y[TERM_CV], vf, NULL, chk->power[2]);
     /* du = K0^-1 R and the displacement u = V x */
     if ((st = gal_chol_solve(m->chol0, y[TERM_R], y[TERM_R]))) goto done;
     if (du) memcpy(du, y[TERM_R], (size_t)n * sizeof(double));
     memcpy(y[TERM_MA], u, (size_t)n * sizeof(double));
     double acc[2][GAL_FAMILY_COUNT] = {{0}}, total = 0;
-    accumulate(m, y[TERM_R], y[TERM_R], rod->mdiag, acc[0]);
-    accumulate(m, y[TERM_MA], y[TERM_MA], rod->mdiag, acc[1]);
+    accumulate(m, dir, y[TERM_R], y[TERM_R], rod->mdiag, acc[0]);
+    accumulate(m, dir, y[TERM_MA], y[TERM_MA], rod->mdiag, acc[1]);
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) total += acc[1][f];
     double floor[GAL_FAMILY_COUNT];
     if ((st = scale_floors(m, y[TERM_G], y[TERM_F], floor))) goto done;
@@ -208,12 +228,14 @@ int gal_rom_cubic(gal_rom *m, const double *eta, double err[GAL_FAMILY_COUNT])
     int n = m->ndof, st = GAL_OK;
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) err[f] = 0;
     if (m->qm || m->nmodes < 1) return GAL_OK; /* the manifold carries its own higher terms */
+    const double *dir = node_dirs(m);
+    if (!dir) return GAL_ENOMEM;
     double *w = calloc((size_t)3 * n + m->r, sizeof(double)), *c = w + n, *y = c + n, *p = y + n;
     if (!w) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the cubic check");
     if ((st = cubic_add(m, eta, -1.0 / 6, w, c, y)) || (st = gal_chol_solve(m->chol0, c, c))) goto done;
     gal_rom_deflate(m, c, y, p);
     double acc[GAL_FAMILY_COUNT] = {0};
-    accumulate(m, c, c, rod->mdiag, acc);
+    accumulate(m, dir, c, c, rod->mdiag, acc);
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) err[f] = sqrt(acc[f]);
 done:
     free(w);
@@ -244,7 +266,14 @@ void gal_rom_deflate(const gal_rom *m, double *y, double *Mc, double *p)
 {
     int n = m->ndof;
     gal_rod_mass_mult(m->rod, y, Mc);
-    for (int k = 0; k < m->r; k++) {
+    int k = 0;
+    for (; k + 4 <= m->r; k += 4) { /* p = V^T Mc four columns a pass, each sum over d in order */
+        const double *v0 = m->V + (size_t)k * n, *v1 = v0 + n, *v2 = v1 + n, *v3 = v2 + n;
+        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+        for (int d = 0; d < n; d++) s0 += v0[d] * Mc[d], s1 += v1[d] * Mc[d], s2 += v2[d] * Mc[d], s3 += v3[d] * Mc[d];
+        p[k] = s0, p[k + 1] = s1, p[k + 2] = s2, p[k + 3] = s3;
+    }
+    for (; k < m->r; k++) {
         double s = 0;
         for (int d = 0; d < n; d++) s += m->V[(size_t)k * n + d] * Mc[d];
         p[k] = s;
@@ -266,6 +295,8 @@ int gal_rom_band_init(gal_rom *m, double band_hz, gal_rom_band *b)
 {
     int r = m->r, n = m->ndof, lw = 64 * r, info = 0;
     gal_rom_band_clear(b);
+    const double *dir = node_dirs(m);
+    if (!dir) return GAL_ENOMEM;
     double *A = malloc(((size_t)r * r + r + lw + n) * sizeof(double));
     b->y = malloc((size_t)r * (r + 1 + GAL_FAMILY_COUNT) * sizeof(double));
     if (!A || !b->y) {
@@ -289,7 +320,7 @@ int gal_rom_band_init(gal_rom *m, double band_hz, gal_rom_band *b)
         memset(u, 0, (size_t)n * sizeof(double));
         for (int i = 0; i < r; i++)
             for (int d = 0; d < n; d++) u[d] += y[i] * m->V[(size_t)i * n + d];
-        accumulate(m, u, u, m->rod->mdiag, fam);
+        accumulate(m, dir, u, u, m->rod->mdiag, fam);
         for (int f = 0; f < GAL_FAMILY_COUNT; f++) tot += fam[f];
         memcpy(b->y + (size_t)nh * r, y, (size_t)r * sizeof(double));
         b->y[(size_t)r * r + nh] = w[k];

@@ -154,8 +154,9 @@ static double residual(gal_rom *m, double *strict, double *raw)
         double fi = dg ? m->fdg[i] : (1 - af) * m->fi1[i] + af * m->fi[i];
         double in = qm ? qm->f1[i] : (1 - am) * m->a1[i] + am * m->a[i];
         m->res[i] = in + c[i] + fi - (1 - af) * m->fe1[i] - af * m->fe[i];
-        rn = fmax(rn, fabs(m->res[i]));
-        sc = fmax(sc, fabs(m->fi1[i]) + fabs(m->fe1[i]));
+        double ar = fabs(m->res[i]), as = fabs(m->fi1[i]) + fabs(m->fe1[i]);
+        if (ar > rn) rn = ar; /* fmax(rn, ar) without the call: a NaN entry is passed over as fmax does */
+        if (as > sc) sc = as;
     }
     double tol = m->o.newton_tol, ts = fmin(tol, GAL_NEWTON_TOL_STRICT);
     *strict = rn / fmax(ts * fmax(sc, m->fscale), m->ffloor), *raw = rn;

@@ -198,6 +198,9 @@ typedef struct gal_rom {
     double check_floor[GAL_FAMILY_COUNT]; /* the self-check's scale floors (rom_check.c), computed
                              * once: they depend on the equilibrium, K0 and the masses alone */
     int check_floor_set;    /* 1: check_floor holds them */
+    double *node_dir;       /* 9 nn: each node's axial, horizontal and vertical unit directions at the
+                             * equilibrium (gal_rod_node_directions at q_eq), made at the first
+                             * check that needs them (rom_check.c), or NULL */
     struct gal_rom_irk *irk; /* o.scheme GAL_ROM_SCHEME_GAUSS2's workspace (rom_irk.c), or NULL */
 } gal_rom;
 
