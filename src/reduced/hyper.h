@@ -59,8 +59,11 @@ int gal_rom_hyper_whole(const gal_rom *m, const double **g, const double **f);
 
 /* b0 = B^T g0 and, when g1, b1 = B^T g1 over the free dofs of the configuration-sized g0, g1 (B: r
  * columns of ndof, the tangent basis), four columns a pass, each sum over the dofs in order
- * (ecsw_train.c: the numbers of one column at a time). */
+ * (ecsw_project.c: the numbers of one column at a time). */
 void gal_rom_project_free(const gal_rom *m, const double *B, const double *g0, const double *g1, double *b0, double *b1);
+/* b[s r + k] = V_k^T G_s for ns gathered whole-rod vectors G_s (ndof each) and the model's r
+ * columns, V read once for all of them (ecsw_project.c) */
+void gal_rom_project_states(const gal_rom *m, const double *G, int ns, double *b);
 
 /* Training state s (deterministic in s) into x and its velocity into v (r each). */
 int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v);
