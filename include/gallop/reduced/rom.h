@@ -48,7 +48,14 @@ typedef struct gal_rom_opts {
                              * part's inertia dropped (mass Phi^T M Phi = I); 0: a linear basis
                              * V = [Phi, Theta] (the modal derivatives as coordinates) */
     const double *mean_load; /* nq: the mean wind's load at rest at the equilibrium (gal_loads_mean)
-                             * or NULL; not owned, not kept */
+                             * or NULL; not owned, not kept past the build (o.wind_vector: it must
+                             * outlive an adaptation that rebuilds the model on these options) */
+    int weight_vector;      /* 1: on a linear basis, the linear static response to the span's weight
+                             * K0^-1 W (conductor and ice, the eccentric ice's moment included)
+                             * appended after the modal derivatives; 0: not (default) */
+    int wind_vector;        /* 1: on a linear basis with mean_load, its static response K0^-1 F_mean
+                             * appended after those (the blown-out direction; wind-dependent: no
+                             * shared set-up); 0: not (default) */
     int static_vectors;     /* on the manifold with mean_load: its static response K0^-1 F_mean less
                              * its modal content as extra linear coordinates (qm.h): 0 none
                              * (default), 1 one vector, 2 the out-of-plane, in-plane and twist
