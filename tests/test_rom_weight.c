@@ -9,27 +9,7 @@
 #include "sim_fixture.h"
 #include "gallop.h"
 #include "base/chol.h"
-
-/* The M-norm share of x (ndof) outside the columns of m->V (V^T M V = I). */
-static double outside(const gal_rom *m, const double *x)
-{
-    const gal_rod *rod = m->rod;
-    int n = m->ndof;
-    double *Mx = malloc((size_t)2 * n * sizeof(double)), *y = Mx + n, nx = 0, ny = 0;
-    gal_rod_mass_mult(rod, x, Mx);
-    memcpy(y, x, (size_t)n * sizeof(double));
-    for (int k = 0; k < m->r; k++) {
-        const double *v = m->V + (size_t)k * n;
-        double p = 0;
-        for (int d = 0; d < n; d++) p += v[d] * Mx[d];
-        for (int d = 0; d < n; d++) y[d] -= p * v[d];
-    }
-    for (int d = 0; d < n; d++) nx += x[d] * Mx[d];
-    gal_rod_mass_mult(rod, y, Mx);
-    for (int d = 0; d < n; d++) ny += y[d] * Mx[d];
-    free(Mx);
-    return sqrt(ny / nx);
-}
+#include "bench/diag_weight.h"
 
 /* The weight's load over the free dofs: m_i g on the vertical entries, the ice moment on the twists
  * by central differences (step 1e-6 rad) of the ice term's energy at q. */
@@ -95,7 +75,7 @@ static void test_load_vectors_in_basis(void)
         CHECK(gal_chol_solve(m[0]->chol0, w, xw) == GAL_OK && gal_chol_solve(m[0]->chol0, xf, xf) == GAL_OK, "%s",
               gal_error_message());
         double ow[3], of[3];
-        for (int k = 0; k < 3; k++) ow[k] = outside(m[k], xw), of[k] = outside(m[k], xf);
+        for (int k = 0; k < 3; k++) ow[k] = rom_m_share(m[k], xw), of[k] = rom_m_share(m[k], xf);
         printf("    K0^-1 W outside the basis: %.3g (modes and derivatives), %.3g (+ weight), %.3g (+ wind); "
                "K0^-1 F_mean: %.3g, %.3g, %.3g; the weight's twist share %.3g\n", ow[0], ow[1], ow[2], of[0], of[1],
                of[2], twist);

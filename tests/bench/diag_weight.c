@@ -20,44 +20,7 @@
 #include "gallop/scene/scene.h"
 #include "base/chol.h"
 
-void dposv_(const char *uplo, const int *n, const int *nrhs, double *a, const int *lda, double *b, const int *ldb,
-            int *info);
-
-static double m_share(const gal_rom *m, const double *x)
-{
-    int n = m->ndof;
-    double *Mx = malloc((size_t)2 * n * sizeof(double)), *y = Mx + n, nx = 0, ny = 0;
-    gal_rod_mass_mult(m->rod, x, Mx);
-    memcpy(y, x, (size_t)n * sizeof(double));
-    for (int k = 0; k < m->r; k++) {
-        const double *v = m->V + (size_t)k * n;
-        double p = 0;
-        for (int d = 0; d < n; d++) p += v[d] * Mx[d];
-        for (int d = 0; d < n; d++) y[d] -= p * v[d];
-    }
-    for (int d = 0; d < n; d++) nx += x[d] * Mx[d];
-    gal_rod_mass_mult(m->rod, y, Mx);
-    for (int d = 0; d < n; d++) ny += y[d] * Mx[d];
-    free(Mx);
-    return sqrt(ny / nx);
-}
-
-static double energy_share(const gal_rom *m, const double *f, const double *x)
-{
-    int n = m->ndof, r = m->r, one = 1, info = 0;
-    double *A = malloc((size_t)r * (r + 2) * sizeof(double)), *b = A + (size_t)r * r, *c = b + r, xf = 0, q = 0;
-    memcpy(A, m->K0r, (size_t)r * r * sizeof(double));
-    for (int k = 0; k < r; k++) {
-        double p = 0;
-        for (int d = 0; d < n; d++) p += m->V[(size_t)k * n + d] * f[d];
-        b[k] = c[k] = p;
-    }
-    dposv_("U", &r, &one, A, &r, b, &r, &info);
-    for (int k = 0; k < r; k++) q += c[k] * b[k];
-    for (int d = 0; d < n; d++) xf += x[d] * f[d];
-    free(A);
-    return info ? NAN : 1 - q / xf;
-}
+#include "diag_weight.h"
 
 int main(int argc, char **argv)
 {
@@ -103,8 +66,8 @@ int main(int argc, char **argv)
     }
     for (int k = 0; k < 2; k++)
         printf("%s %s basis %d%s: K0^-1 W outside: M %.3g energy %.3g; K0^-1 F_mean outside: M %.3g energy %.3g\n",
-               argv[1], argv[2], m[k]->r, k ? " (weight and wind vectors)" : " (default)", m_share(m[k], X),
-               energy_share(m[k], F, X), m_share(m[k], X + n), energy_share(m[k], F + n, X + n));
+               argv[1], argv[2], m[k]->r, k ? " (weight and wind vectors)" : " (default)", rom_m_share(m[k], X),
+               rom_energy_share(m[k], F, X), rom_m_share(m[k], X + n), rom_energy_share(m[k], F + n, X + n));
     gal_rom_free(m[0]), gal_rom_free(m[1]);
     free(fq), free(F);
     gal_sim_setup_clear(&s);
