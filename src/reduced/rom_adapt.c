@@ -146,7 +146,8 @@ static int more_modes(gal_rom_adapt *a, gal_family f)
 /* The size of the basis with nsel modes and nextra corrections (before deflation). */
 static int basis_size(const gal_rom_adapt *a, int nsel, int nextra)
 {
-    return nsel + (a->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + nextra;
+    return nsel + (a->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + nextra +
+           (!a->o.manifold && a->o.weight_vector) + (!a->o.manifold && a->o.wind_vector && a->o.mean_load);
 }
 
 

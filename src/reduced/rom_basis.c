@@ -167,6 +167,37 @@ done:
     return st;
 }
 
+/* The static load responses appended to V (o.weight_vector, o.wind_vector): K0^-1 W, W the load
+ * of the rod's weight terms (gravity and the eccentric ice's moment) at the equilibrium, and
+ * K0^-1 F_mean for the mean wind's load fmean (nq, or NULL); each Gram-Schmidted against V as the
+ * others. c: 2 ndof + r scratch. */
+static int load_vectors(gal_rom *m, double *MV, const double *fmean, double *c)
+{
+    const gal_rod *rod = m->rod;
+    int n = m->ndof, nq = m->nq, st = GAL_OK;
+    double *f = calloc((size_t)2 * nq, sizeof(double)), *g = f + nq;
+    if (!f) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
+    for (int pass = 0; pass < 2 && !st; pass++) {
+        if (pass == 0 && !m->o.weight_vector) continue;
+        if (pass == 1 && !(m->o.wind_vector && fmean)) continue;
+        if (pass == 0) {
+            double U = 0;
+            memset(f, 0, (size_t)nq * sizeof(double));
+            for (int k = 0; k < rod->nterm && !st; k++)
+                if (rod->term[k] == &gal_rod_term_gravity || rod->term[k] == &gal_rod_term_ice) {
+                    if ((st = gal_rod_eval_term(rod, k, m->q_eq, &U, g, NULL))) break; /* g cleared first */
+                    for (int i = 0; i < nq; i++) f[i] += g[i];
+                }
+        } else memcpy(f, fmean, (size_t)nq * sizeof(double));
+        if (st) break;
+        gal_rod_gather(rod, f, c);
+        if ((st = gal_chol_solve(m->chol0, c, c))) break;
+        orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol, c + 2 * n);
+    }
+    free(f);
+    return st;
+}
+
 static int alloc_state(gal_rom *m, int rmax)
 {
     int n = m->ndof, nq = m->nq, r = rmax;
@@ -277,6 +308,7 @@ static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, cons
     m->ndof = rod->ndof, m->nq = rod->nq, m->nmodes = nsel;
     int n = m->ndof, rmax = nsel + (m->o.derivatives ? nsel * (nsel + 1) / 2 : 0) + (m->o.nextra > 0 ? m->o.nextra : 0);
     if (m->o.manifold) rmax += 3; /* the static vectors (qm.h) */
+    else rmax += (m->o.weight_vector != 0) + (m->o.wind_vector && m->o.mean_load); /* load_vectors */
     double *MV = malloc((size_t)n * rmax * sizeof(double)), *c = malloc(((size_t)2 * n + rmax) * sizeof(double));
     m->omega2 = malloc((size_t)nsel * sizeof(double)), m->setup_sel = malloc((size_t)nsel * sizeof(int));
     if (!MV || !c || !m->omega2 || !m->setup_sel) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
@@ -299,8 +331,10 @@ static int build_setup(gal_rom *m, const double *q_eq, const gal_modes *md, cons
         goto done;
     }
     if (m->o.manifold && (st = gal_rom_qm_static(m, MV))) goto done;
+    const double *fmean = m->o.mean_load;
     m->o.mean_load = NULL; /* not owned */
     if (m->o.derivatives && (st = m->o.manifold ? gal_rom_qm_build(m) : derivatives(m, MV, nsel, c + 2 * n))) goto done;
+    if (!m->o.manifold && (st = load_vectors(m, MV, fmean, c))) goto done;
     for (int k = 0; k < m->o.nextra; k++) {
         memcpy(c, m->o.extra + (size_t)k * n, (size_t)n * sizeof(double));
         orth_append(rod, m->V, MV, &m->r, c, c + n, m->o.deflation_tol, c + 2 * n);
@@ -348,6 +382,7 @@ static int setup_matches(const gal_rom *s, const gal_rod *rod, const double *q_e
     return s->rod == rod && s->setup_shape == md->shape && s->setup_nsel == nsel && !s->qm && !o->manifold &&
            !memcmp(s->setup_sel, sel, (size_t)nsel * sizeof(int)) && o->nextra <= 0 && a->nextra <= 0 &&
            !memcmp(s->q_eq, q_eq, (size_t)rod->nq * sizeof(double)) && a->derivatives == o->derivatives &&
+           a->weight_vector == o->weight_vector && !o->wind_vector && !a->wind_vector &&
            a->deflation_tol == o->deflation_tol && a->derivative_floor == o->derivative_floor && a->fd_step_m == o->fd_step_m && a->hyper == o->hyper &&
            a->hyper_tol == o->hyper_tol && a->hyper_twist == o->hyper_twist && a->hyper_snapshots == o->hyper_snapshots;
 }

@@ -48,7 +48,21 @@ typedef struct gal_rom_opts {
                              * part's inertia dropped (mass Phi^T M Phi = I); 0: a linear basis
                              * V = [Phi, Theta] (the modal derivatives as coordinates) */
     const double *mean_load; /* nq: the mean wind's load at rest at the equilibrium (gal_loads_mean)
-                             * or NULL; not owned, not kept */
+                             * or NULL; not owned, not kept past the build (o.wind_vector: it must
+                             * outlive an adaptation that rebuilds the model on these options) */
+    int weight_vector;      /* 1: on a linear basis, the linear static response to the span's weight
+                             * K0^-1 W (conductor and ice, the eccentric ice's moment included)
+                             * appended after the modal derivatives; 0: not (default) */
+    int wind_vector;        /* 1: on a linear basis with mean_load, its static response K0^-1 F_mean
+                             * appended after those (the blown-out direction; wind-dependent: no
+                             * shared set-up); 0: not (default). Both off by default, measured
+                             * (BENCHMARKS.md, helper weight, session 11): the modes and modal
+                             * derivatives already hold K0^-1 W and K0^-1 F_mean to 2e-4 of their
+                             * static energy; on the limit-cycle spans at 100/125 elements the
+                             * weight's vector moves the largest tension closer or the same (e.g.
+                             * +0.84 -> +0.18%) but twist and residual mixed (condor_150 at 100:
+                             * twist +5.4 -> +6.1%, residual 0.058 -> 0.093), the wind's mixed
+                             * (drake_200 at 125: twist +2.1 -> +9.0%) */
     int static_vectors;     /* on the manifold with mean_load: its static response K0^-1 F_mean less
                              * its modal content as extra linear coordinates (qm.h): 0 none
                              * (default), 1 one vector, 2 the out-of-plane, in-plane and twist
