@@ -52,7 +52,7 @@ static void envelope_times(const double *x, long n, double dt, double *env, gal_
     double level = 0, ts = NAN;
     gal_hilbert *h = gal_spectrum_hilbert_alloc((size_t)n);
     m->rise_time_s = NAN;
-    if (h && gal_spectrum_envelope(h, x, 2.0, env) == GAL_OK) {
+    if (h && gal_spectrum_envelope(h, x, GAL_SPECTRUM_ENVELOPE_BAND, env) == GAL_OK) {
         gal_spectrum_steady_time(env, (size_t)n, dt, 0.05, &ts, &level);
         /* first time the envelope reaches 90% of its final level: robust to a final level that
          * still breathes by a few per cent */

@@ -163,7 +163,7 @@ int gal_spectrum_orbit(const double *y, const double *z, size_t n, gal_orbit *o)
  * Envelope and time to steady galloping.
  * ====================================================================================== */
 
-#define GAL_SPECTRUM_ENVELOPE_BAND 2.0
+#define GAL_SPECTRUM_ENVELOPE_BAND 1.5
 
 typedef struct gal_hilbert gal_hilbert;   /* workspace: buffers and the FFTW plans for n */
 
@@ -179,7 +179,10 @@ gal_hilbert *gal_spectrum_hilbert_free(gal_hilbert *h);
  * Reflecting about the end sample itself would leave a kink whose error decays like 1/distance.
  * band > 0 keeps only the frequencies 0 < f < band f_d, f_d the largest bin of the (extended)
  * record's spectrum, so that broadband noise and harmonics do not ripple the envelope of the
- * dominant oscillation (band = 2 is GAL_SPECTRUM_ENVELOPE_BAND); band <= 0 keeps every frequency. */
+ * dominant oscillation (band = 1.5 is GAL_SPECTRUM_ENVELOPE_BAND: halfway to the second harmonic,
+ * whose line a cut at 2 f_d would split and half keep, rippling the envelope at f_d by up to the
+ * harmonic's share; the soft-torsion span at 40 elements, BENCHMARKS.md, helper forty);
+ * band <= 0 keeps every frequency. */
 int gal_spectrum_envelope(gal_hilbert *h, const double *x, double band, double *env);
 
 /* Time to steady: final level L = median of env over the last 20% of the record, sigma = 1.4826
