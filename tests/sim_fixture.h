@@ -21,6 +21,20 @@ static int sim_fixture(gal_scene *sc, gal_sim_setup *s, const char *path, const 
     return 0;
 }
 
+/* sim_fixture's scene carried through the pipeline to the reduced model's stage (gal_forward to
+ * GAL_STAGE_REDUCED: equilibrium, modes, selection, damping); its data, or NULL after a failed
+ * CHECK (the set-up cleared). */
+static inline gal_data *forward_fixture(gal_scene *sc, gal_sim_setup *s, const char *path, const char **ov, int nov)
+{
+    if (sim_fixture(sc, s, path, ov, nov)) return NULL;
+    if (gal_forward(s->model, s->data, GAL_STAGE_REDUCED)) {
+        CHECK(0, "%s: %s", path, gal_error_message());
+        gal_sim_setup_clear(s);
+        return NULL;
+    }
+    return s->data;
+}
+
 /* The reduced model of a set-up scene (gal_forward to GAL_STAGE_REDUCED) with the options *ro, its
  * damping the scene's, under the scene's loads, started from the scene's start state; NULL after a
  * failed CHECK naming the library's message. */

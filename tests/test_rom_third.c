@@ -47,13 +47,8 @@ static void test_third(void)
     gal_scene sc;
     const char *ov[] = {"model.elements=40", "simulation.duration=30"};
     gal_sim_setup s;
-    if (sim_fixture(&sc, &s, "tests/rom/grosbeak_300_soft_gj.ini", ov, 2)) return;
-    gal_data *d = s.data;
-    if (gal_forward(s.model, d, GAL_STAGE_REDUCED)) {
-        CHECK(0, "%s", gal_error_message());
-        gal_sim_setup_clear(&s);
-        return;
-    }
+    gal_data *d = forward_fixture(&sc, &s, "tests/rom/grosbeak_300_soft_gj.ini", ov, 2);
+    if (!d) return;
     const gal_rod *rod = d->eq.rod;
     double fhi = 0;
     for (int k = 0; k < d->basis; k++) fhi = fmax(fhi, d->md.mode[d->sel[k]].frequency_hz);

@@ -47,13 +47,8 @@ static void test_load_vectors_in_basis(void)
     const char *ov[] = {"model.elements=40", "ice.eccentricity=0.02"};
     gal_scene sc;
     gal_sim_setup s;
-    if (sim_fixture(&sc, &s, "data/scenes/iced_gallop.ini", ov, 2)) return;
-    gal_data *d = s.data;
-    if (gal_forward(s.model, d, GAL_STAGE_REDUCED)) {
-        CHECK(0, "%s", gal_error_message());
-        gal_sim_setup_clear(&s);
-        return;
-    }
+    gal_data *d = forward_fixture(&sc, &s, "data/scenes/iced_gallop.ini", ov, 2);
+    if (!d) return;
     const gal_rod *rod = d->eq.rod;
     int n = rod->ndof, nq = rod->nq;
     double *w = malloc((size_t)2 * n * sizeof(double)), *xw = w + n, *fm = calloc((size_t)nq, sizeof(double));
