@@ -145,23 +145,33 @@ static void predict(gal_dyn *d, double h)
 /* The convergence test's force tolerance for a step of size h at the relative tolerance rel, N:
  * rel times the step's force scale (the largest elastic + load entry at its start, at least the
  * weight of one node), not below the round-off floors. */
-static double force_tolerance(const gal_dyn *d, double h, double rel)
+static void force_tolerance(const gal_dyn *d, double h, double rel, double rel_strict, double *tol,
+                            double *strict)
 {
     const gal_rod *rod = d->rod;
     int n = rod->ndof;
     double scale = 0, qm = 0;
-    for (int j = 0; j < n; j++) scale = fmax(scale, fabs(d->fint0[rod->free_q[j]]) + fabs(d->fext0[rod->free_q[j]]));
-    /* a force scale for the convergence test: the weight of one node at least */
-    for (int j = 0; j < n; j++) scale = fmax(scale, d->mdiag[j] * 9.81);
+    /* the maxima of nonnegative entries by comparison: fmax's value (a NaN entry passed over as fmax
+     * does) without its call */
+    for (int j = 0; j < n; j++) {
+        double f = fabs(d->fint0[rod->free_q[j]]) + fabs(d->fext0[rod->free_q[j]]);
+        /* a force scale for the convergence test: the weight of one node at least */
+        double w = d->mdiag[j] * 9.81;
+        /* the round-off of the inertia term (1-am) M (q1 - q0 - h v0) / (beta h^2): q1 known to
+         * eps |q|, times the mass over beta h^2 (it grows as 1/h^2: at h = 1e-4 s it passes the
+         * relative tolerance on a 200 m span) */
+        double m = fabs(d->q[rod->free_q[j]]) * d->mdiag[j];
+        if (f > scale) scale = f;
+        if (w > scale) scale = w;
+        if (m > qm) qm = m;
+    }
     /* not below the round-off of the elastic forces: positions known to eps L, times the axial
      * stiffness of an element EA / l0 */
     double elastic = 20 * DBL_EPSILON * fmax(rod->p.length, fabs(rod->p.height_difference)) * rod->p.EA / rod->l0[0];
-    /* nor below the round-off of the inertia term (1-am) M (q1 - q0 - h v0) / (beta h^2): q1 known
-     * to eps |q|, times the mass over beta h^2 (it grows as 1/h^2: at h = 1e-4 s it passes the
-     * relative tolerance on a 200 m span) */
-    for (int j = 0; j < n; j++) qm = fmax(qm, fabs(d->q[rod->free_q[j]]) * d->mdiag[j]);
     double inertia = 20 * DBL_EPSILON * qm * (1 - d->am) / (d->beta * h * h);
-    return fmax(rel * scale, fmax(elastic, inertia));
+    double floor = fmax(elastic, inertia);
+    *tol = fmax(rel * scale, floor);
+    *strict = fmax(rel_strict * scale, floor);
 }
 
 /* The residual R at the iterate q1 of a step of size h into d->r (a1, v1, the elastic forces
@@ -265,8 +275,8 @@ static int try_step(gal_dyn *d, double h)
 {
     const gal_rod *rod = d->rod;
     int n = rod->ndof, st;
-    double t1 = d->t + h, rprev = INFINITY, tol = force_tolerance(d, h, d->o.newton_tol);
-    double strict = force_tolerance(d, h, fmin(d->o.newton_tol, GAL_NEWTON_TOL_STRICT));
+    double t1 = d->t + h, rprev = INFINITY, tol, strict;
+    force_tolerance(d, h, d->o.newton_tol, fmin(d->o.newton_tol, GAL_NEWTON_TOL_STRICT), &tol, &strict);
     predict(d, h);
     for (int it = 0; it < d->o.max_newton; it++) {
         double rn;

@@ -107,7 +107,29 @@ void gal_damping_apply(const gal_damping *c, const double *v, double *y)
 {
     int n = c->ndof;
     if (c->kind == GAL_DAMPING_MODAL) {
-        for (int k = 0; k < c->nb; k++) {
+        /* four band modes at a time: their dots in one pass over v (four chains, each summed in
+         * order), then y updated by the four in mode order, each entry's sum as one mode at a time
+         * makes it (y and v apart) */
+        int k = 0;
+        for (; k + 4 <= c->nb; k += 4) {
+            const double *m0 = c->mphi + (size_t)k * n, *m1 = m0 + n, *m2 = m1 + n, *m3 = m2 + n;
+            double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+            for (int j = 0; j < n; j++) {
+                double x = v[j];
+                s0 += m0[j] * x, s1 += m1[j] * x, s2 += m2[j] * x, s3 += m3[j] * x;
+            }
+            s0 *= 2 * c->zeta * c->omega[k], s1 *= 2 * c->zeta * c->omega[k + 1];
+            s2 *= 2 * c->zeta * c->omega[k + 2], s3 *= 2 * c->zeta * c->omega[k + 3];
+            for (int j = 0; j < n; j++) {
+                double t = y[j];
+                t += s0 * m0[j];
+                t += s1 * m1[j];
+                t += s2 * m2[j];
+                t += s3 * m3[j];
+                y[j] = t;
+            }
+        }
+        for (; k < c->nb; k++) {
             const double *m = c->mphi + (size_t)k * n;
             double s = 0;
             for (int j = 0; j < n; j++) s += m[j] * v[j];

@@ -57,7 +57,7 @@ void gal_damping_rayleigh_fit(double zeta, double w1, double w2, double *alpha, 
 /* Free; accepts NULL; returns NULL. */
 gal_damping *gal_damping_free(gal_damping *c);
 
-/* y += C v over the free dofs (ndof each). */
+/* y += C v over the free dofs (ndof each); y and v must not overlap. */
 void gal_damping_apply(const gal_damping *c, const double *v, double *y);
 /* P = Phi^T C Phi (n x n, column-major) for a basis Phi (ndof x n, column-major). GAL_OK or
  * GAL_ENOMEM. */
