@@ -23,7 +23,8 @@ typedef struct gal_rom_sim_opts {
     int policy;               /* GAL_ROM_ADD_* bits (default both) */
     int relax;                /* the new stiff directions start quasi-static (1, default) */
     int replay;               /* a growth runs the grown model again from the start (1, default;
-                               * rom_adapt.h); 0: restarted in place */
+                               * rom_adapt.h), and the record before it is rewritten with the grown
+                               * model's samples (and taut share); 0: restarted in place */
     const double *extra;      /* ndof x nextra: vectors added to the initial basis (gal_rom_opts) */
     int nextra;
 } gal_rom_sim_opts;
