@@ -107,15 +107,23 @@ static int basis_at(work *w, const gal_rod *rod, const double *q, const gal_load
                     double mass, unsigned fam, gal_onset_speed *sp)
 {
     gal_modes md;
-    int st = gal_modes_solve(rod, q, w->nev, &md);
-    if (st) return gal_error(st, "onset: modes at %.4g m/s: %s", sp->speed, gal_error_message());
     int k = 0, n = w->n;
-    for (int j = 0; j < md.n && k < w->nb; j++) /* the lowest nb - ntors, then the torsional ones above */
-        if ((!fam || (fam >> md.mode[j].family & 1u)) &&
-            (k < w->nb - w->ntors || md.mode[j].family == GAL_FAMILY_TORSIONAL)) {
-            memcpy(w->phi + (size_t)k * n, md.shape + (size_t)j * n, (size_t)n * sizeof(double));
-            w->omega[k++] = md.mode[j].omega;
-        }
+    for (;;) {
+        int st = gal_modes_solve(rod, q, w->nev, &md);
+        if (st) return gal_error(st, "onset: modes at %.4g m/s: %s", sp->speed, gal_error_message());
+        k = 0;
+        for (int j = 0; j < md.n && k < w->nb; j++) /* the lowest nb - ntors, then the torsional ones above */
+            if ((!fam || (fam >> md.mode[j].family & 1u)) &&
+                (k < w->nb - w->ntors || md.mode[j].family == GAL_FAMILY_TORSIONAL)) {
+                memcpy(w->phi + (size_t)k * n, md.shape + (size_t)j * n, (size_t)n * sizeof(double));
+                w->omega[k++] = md.mode[j].omega;
+            }
+        /* the wind's equilibrium reorders the modes (a torsional one found at rest can lie above the
+         * modes asked for here): ask for more, kept for the next speeds, up to every mode */
+        if (k == w->nb || w->nev >= n - 1) break;
+        gal_modes_clear(&md);
+        w->nev = w->nev + (w->nev / 2 > 20 ? w->nev / 2 : 20) < n - 1 ? w->nev + (w->nev / 2 > 20 ? w->nev / 2 : 20) : n - 1;
+    }
     sp->zeta_vertical = NAN, sp->den_hartog_onset = NAN;
     for (int j = 0; j < md.n; j++)
         if (md.mode[j].family == GAL_FAMILY_VERTICAL) {
