@@ -57,18 +57,29 @@ static double pp_of(const gal_sim_result *r, int k, int comp, long i0, long i1)
     return i1 > i0 ? hi - lo : NAN;
 }
 
-/* the full run's steadiness over the window, at the vertical headline probe */
+/* the full run's steadiness over the window, each family at its headline probe (compare.h) */
 static void window_drift(const gal_sim_result *full, gal_compare_figures *c)
 {
     long n = full->nsamples, i0 = (long)floor(c->full.steady_from_s / full->dt_out + 0.5);
     if (i0 < 0) i0 = 0;
     if (i0 > n) i0 = n;
     long ih = i0 + (n - i0) / 2;
-    int k = c->headline[GAL_CMP_VERTICAL];
-    double a = pp_of(full, k, 1, i0, ih), b = pp_of(full, k, 1, ih, n);
-    c->window_pp_first = a, c->window_pp_second = b;
-    c->window_drift = fabs(a - b) / fmax(fmax(a, b), 1e-300);
-    c->full_steady = c->window_drift <= GAL_CMP_STEADY_DRIFT;
+    c->full_steady = 1;
+    for (int f = 0; f < GAL_CMP_FAMILIES; f++) {
+        int k = c->headline[f];
+        double a = pp_of(full, k, comp_of[f], i0, ih), b = pp_of(full, k, comp_of[f], ih, n);
+        c->family_first[f] = a, c->family_second[f] = b;
+        c->family_drift[f] = fabs(a - b) / fmax(fmax(a, b), 1e-300);
+        double floor_abs = 0; /* what the limits allow besides the relative 5% */
+        if (f == GAL_CMP_HORIZONTAL)
+            floor_abs = GAL_CMP_STEADY_H_OF_V * fmax(c->family_first[GAL_CMP_VERTICAL], c->family_second[GAL_CMP_VERTICAL]);
+        else if (f == GAL_CMP_TWIST) floor_abs = GAL_CMP_STEADY_TWIST_DEG;
+        /* a NaN drift (an empty window) is not steady, as before */
+        c->family_steady[f] = c->family_drift[f] <= GAL_CMP_STEADY_DRIFT || (f != GAL_CMP_VERTICAL && fabs(a - b) <= floor_abs);
+        c->full_steady &= c->family_steady[f];
+    }
+    c->window_pp_first = c->family_first[GAL_CMP_VERTICAL], c->window_pp_second = c->family_second[GAL_CMP_VERTICAL];
+    c->window_drift = c->family_drift[GAL_CMP_VERTICAL];
 }
 
 int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, double from, gal_compare_figures *c)

@@ -193,12 +193,15 @@ void gal_cli_print_compare(const gal_compare_figures *c, const char *twist, doub
     printf("frequency error %s, amplitude errors: vertical %s, horizontal %s, %s %s; speedup %.2fx "
            "(reduced model's own set-up %.3f s)\n", pct(b[0], c->frequency_error), pct(b[1], c->err_vertical),
            pct(b[2], c->err_horizontal), twist, pct(b[3], c->err_twist), c->speedup, setup_s);
-    if (!c->full_steady)
-        fprintf(stderr, "gallop compare: warning: the full model is not steady over the window (vertical "
-                "peak-to-peak at %g of the span %.4g m in its first half, %.4g m in its second, %.3g%% apart: "
-                "still growing, decaying or bursting): the runs are compared in a transient; lengthen "
-                "simulation.duration (or check that the span gallops)\n", p[h[0]].position, c->window_pp_first,
-                c->window_pp_second, 100 * c->window_drift);
+    static const char *const fam[GAL_CMP_FAMILIES] = {"vertical", "horizontal", "twist"};
+    static const char *const unit[GAL_CMP_FAMILIES] = {"m", "m", "deg"};
+    for (int f = 0; f < GAL_CMP_FAMILIES; f++)
+        if (!c->family_steady[f])
+            fprintf(stderr, "gallop compare: warning: the full model is not steady over the window (%s "
+                    "peak-to-peak at %g of the span %.4g %s in its first half, %.4g %s in its second, %.3g%% apart: "
+                    "still growing, decaying or bursting): the runs are compared in a transient; lengthen "
+                    "simulation.duration (or check that the span gallops)\n", fam[f], p[h[f]].position,
+                    c->family_first[f], unit[f], c->family_second[f], unit[f], 100 * c->family_drift[f]);
     if (c->nprobe < 2) return;
     printf("headline at the full model's largest peak-to-peak: vertical at %g, horizontal at %g, %s at %g of the "
            "span\n",

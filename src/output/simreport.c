@@ -265,6 +265,12 @@ static void json_compare_probes(gal_json *j, const gal_compare_figures *c)
     gal_json_kv_num(j, "vertical_peak_to_peak_first_half_m", c->window_pp_first);
     gal_json_kv_num(j, "vertical_peak_to_peak_second_half_m", c->window_pp_second);
     gal_json_kv_num(j, "drift", c->window_drift);
+    gal_json_kv_num(j, "horizontal_peak_to_peak_first_half_m", c->family_first[GAL_CMP_HORIZONTAL]);
+    gal_json_kv_num(j, "horizontal_peak_to_peak_second_half_m", c->family_second[GAL_CMP_HORIZONTAL]);
+    gal_json_kv_num(j, "horizontal_drift", c->family_drift[GAL_CMP_HORIZONTAL]);
+    gal_json_kv_num(j, "twist_peak_to_peak_first_half_deg", c->family_first[GAL_CMP_TWIST]);
+    gal_json_kv_num(j, "twist_peak_to_peak_second_half_deg", c->family_second[GAL_CMP_TWIST]);
+    gal_json_kv_num(j, "twist_drift", c->family_drift[GAL_CMP_TWIST]);
     gal_json_key(j, "steady");
     gal_json_bool(j, c->full_steady);
     gal_json_obj_end(j);

@@ -40,12 +40,21 @@ typedef struct gal_compare_figures {
      * steady when it is at most GAL_CMP_STEADY_DRIFT (a run still in its transient, or bursting,
      * compares two transients: their figures say nothing of the reduced model's accuracy) */
     double window_pp_first, window_pp_second, window_drift;
-    int full_steady;
+    /* the same for every family at its headline probe (m, m, deg; [GAL_CMP_VERTICAL] repeats the
+     * three above): a family is unsteady past GAL_CMP_STEADY_DRIFT when its change also passes what
+     * issue 13's limits allow besides the 5% (horizontal: GAL_CMP_STEADY_H_OF_V of the vertical
+     * peak-to-peak, twist: GAL_CMP_STEADY_TWIST_DEG), so that a small family's ripple is not taken
+     * for a transient (a horizontal burst under a steady vertical was: BENCHMARKS.md, session 12) */
+    double family_first[GAL_CMP_FAMILIES], family_second[GAL_CMP_FAMILIES], family_drift[GAL_CMP_FAMILIES];
+    int family_steady[GAL_CMP_FAMILIES];
+    int full_steady;                   /* every family steady */
     int nprobe;
     gal_compare_probe probe[GAL_MAX_PROBES];
 } gal_compare_figures;
 
 #define GAL_CMP_STEADY_DRIFT 0.05
+#define GAL_CMP_STEADY_H_OF_V 0.02
+#define GAL_CMP_STEADY_TWIST_DEG 3.0
 
 /* A family whose full peak-to-peak is below these (a micrometre; a ten-thousandth of a degree) does
  * not move: its relative error (and the vertical one's frequency error) is NaN, written null and
