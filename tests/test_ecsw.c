@@ -245,7 +245,7 @@ static void test_candidates(void)
  * the mesh (128 of each kind of element per training state) and the targets take one evaluation of
  * the whole rod per training state; up to 128 elements every element is a candidate and there is
  * no whole-rod evaluation. */
-static long train_counts(int elements, long *full, int *ns)
+static long train_counts_fine(int elements, int fine, long *full, int *ns)
 {
     gal_rod_params p = iced;
     p.elements = elements;
@@ -254,6 +254,7 @@ static long train_counts(int elements, long *full, int *ns)
     if (make_span(&s, &p, 4.0, want)) return -1;
     gal_rom_opts o;
     gal_rom_default_opts(&o);
+    o.hyper_snapshots_fine = fine;
     gal_rom *m = gal_rom_alloc(s.eq.rod, s.eq.q, &s.md, s.sel, s.r, &o, NULL);
     CHECK(m != NULL, "%s", gal_error_message());
     long ev = -1;
@@ -267,6 +268,11 @@ static long train_counts(int elements, long *full, int *ns)
     return ev;
 }
 
+static long train_counts(int elements, long *full, int *ns)
+{
+    return train_counts_fine(elements, 0, full, ns);
+}
+
 static void test_training_counts(void)
 {
     long f0, f1, f2;
@@ -277,6 +283,19 @@ static void test_training_counts(void)
     CHECK(e0 == (long)n0 * (2 * 60 - 1) && f0 == 0, "60 elements: every element a candidate, %ld, %ld", e0, f0);
     CHECK(e1 > 0 && e2 > 0 && e2 <= e1 + 2L * n2 && e1 <= (long)n1 * (2 * 128 + 4), "candidates: %ld at 260, %ld at 520", e1, e2);
     CHECK(f1 == n1 && f2 == n2, "one whole-rod evaluation a training state: %ld of %d, %ld of %d", f1, n1, f2, n2);
+    /* the training states: hyper_snapshots at every mesh by default; with hyper_snapshots_fine,
+     * that many above the candidates' count of elements (128), where each costs the whole mesh */
+    gal_rom_opts o;
+    gal_rom_default_opts(&o);
+    CHECK(n0 == o.hyper_snapshots && n1 == o.hyper_snapshots && n2 == o.hyper_snapshots, "training states %d, %d, %d",
+          n0, n1, n2);
+    long f3, f4, f5;
+    int n3, n4, n5, fine = o.hyper_snapshots / 2;
+    train_counts_fine(128, fine, &f3, &n3), train_counts_fine(129, fine, &f4, &n4), train_counts_fine(520, fine, &f5, &n5);
+    CHECK(n3 == o.hyper_snapshots && f3 == 0, "hyper_snapshots_fine %d: %d training states at 128 elements", fine, n3);
+    CHECK(n4 == fine && n5 == fine && f4 == n4 && f5 == n5,
+          "hyper_snapshots_fine %d: %d and %d training states at 129 and 520 elements (whole-rod evaluations %ld, %ld)",
+          fine, n4, n5, f4, f5);
 }
 
 /* The loads' element shares add up to gal_loads_full. */

@@ -198,7 +198,9 @@ int gal_rom_hyper_build(gal_rom *m)
     h->amp = fmax(sag, 0.01 * sqrt(L * L + hd * hd));
     memset(x, 0, (size_t)r * sizeof(double));
     if ((st = gal_rom_exact_force(m, x, h->F0))) goto done;
-    for (int s = 0; s < m->o.hyper_snapshots && !st; s++) {
+    int ns = m->o.hyper_snapshots; /* fewer on a fine mesh: each costs a whole-mesh evaluation there */
+    if (rod->p.elements > GAL_ROM_CANDIDATES && m->o.hyper_snapshots_fine > 0) ns = m->o.hyper_snapshots_fine;
+    for (int s = 0; s < ns && !st; s++) {
         st = gal_rom_hyper_training_state(m, s, x, x + r);
         if (!st) st = add_snapshot(h, r, x, x + r, 10.0 + 7.3 * s);
     }

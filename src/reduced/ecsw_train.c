@@ -78,7 +78,6 @@ int gal_rom_hyper_training_state(gal_rom *m, int s, double *x, double *v)
  * of up to that many elements trains as before). Neighbours, not single elements: measured at
  * 400 elements, every other element alone cannot fit the target (NNLS residual 0.76, the
  * element-scale alternation of the forces), neighbouring pairs at 64 positions fit to 0.0074. */
-#define GAL_ROM_CANDIDATES 128
 static int candidates(const gal_rom *m, int set, int *cand)
 {
     const gal_rod *rod = m->rod;

@@ -28,6 +28,11 @@ typedef struct gal_rom_hyper_set {
                                 * coordinate's force over the training states) */
 } gal_rom_hyper_set;
 
+/* The training's candidates of each kind on a fine mesh: every element up to this many elements,
+ * this many spread over the span above (ecsw_train.c); above it the fits' targets are whole-mesh
+ * evaluations, one a training state (gal_rom_opts.hyper_snapshots_fine of them). */
+#define GAL_ROM_CANDIDATES 128
+
 typedef struct gal_rom_hyper {
     gal_rom_hyper_set set[2];  /* 0: the rod's energy, 1: the aerodynamic loads */
     int loads;                 /* the loads are sampled (gal_force.element given) */

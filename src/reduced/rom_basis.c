@@ -35,6 +35,7 @@ void gal_rom_default_opts(gal_rom_opts *o)
     o->newton_tol = 1e-8;
     o->max_newton = 20;
     o->hyper = 1, o->hyper_tol = 1e-2, o->hyper_check_tol = 2e-2, o->hyper_twist = 1.5, o->hyper_snapshots = 24;
+    o->hyper_snapshots_fine = 0; /* measured, not the default: BENCHMARKS.md, helper setup3 */
     o->hyper_check_interval = 1.0, o->hyper_loads = 1, o->reuse_tangent = 1;
     o->newton_contraction = 0.1, o->newton_kept_max = 3, o->loads_once = 1, o->one_pass = 0;
 }
@@ -384,7 +385,8 @@ static int setup_matches(const gal_rom *s, const gal_rod *rod, const double *q_e
            !memcmp(s->q_eq, q_eq, (size_t)rod->nq * sizeof(double)) && a->derivatives == o->derivatives &&
            a->weight_vector == o->weight_vector && !o->wind_vector && !a->wind_vector &&
            a->deflation_tol == o->deflation_tol && a->derivative_floor == o->derivative_floor && a->fd_step_m == o->fd_step_m && a->hyper == o->hyper &&
-           a->hyper_tol == o->hyper_tol && a->hyper_twist == o->hyper_twist && a->hyper_snapshots == o->hyper_snapshots;
+           a->hyper_tol == o->hyper_tol && a->hyper_twist == o->hyper_twist && a->hyper_snapshots == o->hyper_snapshots &&
+           a->hyper_snapshots_fine == o->hyper_snapshots_fine;
 }
 
 /* A model on a copy of the set-up s (its factorization of K0 borrowed), not finished. */

@@ -20,12 +20,21 @@ static double node(const gal_rod *rod, int i, const double *q, const gal_rod_nod
         double gc[6] = {a0[0], a0[1], a0[2], a1[0], a1[1], a1[2]};
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) {
-                /* d2c/de0^2 = -(t0 a0^T + a0 t0^T + c P0/n0)/n0, d2c/de0 de1 = (P1/n1 - t0 a1^T)/n0 */
-                double c00 = -(t0[a] * a0[b] + a0[a] * t0[b] + c * nd->P0[a][b] / n0) / n0;
-                double c11 = -(t1[a] * a1[b] + a1[a] * t1[b] + c * nd->P1[a][b] / n1) / n1;
+                /* d2c/de0^2 = -(t0 a0^T + a0 t0^T + c P0/n0)/n0, d2c/de0 de1 = (P1/n1 - t0 a1^T)/n0;
+                 * c00 and c11 are symmetric in a, b bit for bit (each two-term product and sum
+                 * commutes, P0 and P1 are): computed for b >= a, used for both entries (f2 gc_a gc_b
+                 * is not: a product of three, taken in each entry's own order) */
+                if (b >= a) {
+                    double c00 = -(t0[a] * a0[b] + a0[a] * t0[b] + c * nd->P0[a][b] / n0) / n0;
+                    double c11 = -(t1[a] * a1[b] + a1[a] * t1[b] + c * nd->P1[a][b] / n1) / n1;
+                    H[a][b] += k * (f2 * gc[a] * gc[b] + f1 * c00);
+                    H[3 + a][3 + b] += k * (f2 * gc[3 + a] * gc[3 + b] + f1 * c11);
+                    if (b != a) {
+                        H[b][a] += k * (f2 * gc[b] * gc[a] + f1 * c00);
+                        H[3 + b][3 + a] += k * (f2 * gc[3 + b] * gc[3 + a] + f1 * c11);
+                    }
+                }
                 double c01 = (nd->P1[a][b] / n1 - t0[a] * a1[b]) / n0;
-                H[a][b] += k * (f2 * gc[a] * gc[b] + f1 * c00);
-                H[3 + a][3 + b] += k * (f2 * gc[3 + a] * gc[3 + b] + f1 * c11);
                 H[a][3 + b] += k * (f2 * gc[a] * gc[3 + b] + f1 * c01);
                 H[3 + b][a] = H[a][3 + b];
             }

@@ -40,9 +40,29 @@ static const int inc_v[NL][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 3}, {1, 4}, {2, 5},
 static const double inc_c[NL][2] = {{-1, 0}, {-1, 0}, {-1, 0}, {1, -1}, {1, -1}, {1, -1},
                                     {1, 0},  {1, 0},  {1, 0},  {1, 0},  {1, 0}};
 
-/* Assemble the stencil gradient g (8) and Hessian H (8 x 8, when K) of node i. */
-static void assemble(const gal_rod *rod, int i, const double *g, double (*H)[8], double *grad,
-                     gal_csc *K)
+/* The Hessian's incidence unrolled: node-space entry (a, b) = sum over its n terms of
+ * c[t] * H[i[t]] (H flat, 8 x 8), the terms in the order of the loops over inc_v[a], then inc_v[b]
+ * (the coefficients' products are +-1: each term exact, the same sums as those loops). */
+typedef struct hess_plan {
+    int n, i[4];
+    double c[4];
+} hess_plan;
+
+static void plan_build(hess_plan *P)
+{
+    for (int a = 0; a < NL; a++)
+        for (int b = 0; b < NL; b++) {
+            hess_plan *p = P + a * NL + b;
+            p->n = 0;
+            for (int r = 0; r < inc_n[a]; r++)
+                for (int t = 0; t < inc_n[b]; t++, p->n++)
+                    p->i[p->n] = 8 * inc_v[a][r] + inc_v[b][t], p->c[p->n] = inc_c[a][r] * inc_c[b][t];
+        }
+}
+
+/* Assemble the stencil gradient g (8) and Hessian H (8 x 8, when K; P its plan) of node i. */
+static void assemble(const gal_rod *rod, int i, const double *g, double (*H)[8], const hess_plan *P,
+                     double *grad, gal_csc *K)
 {
     int qi[NL];
     gal_rod_node_q(rod, i, qi);
@@ -55,22 +75,26 @@ static void assemble(const gal_rod *rod, int i, const double *g, double (*H)[8],
         }
     if (K) {
         const int *sm = rod->slot_node + (size_t)(i - 1) * NL * NL;
-        for (int a = 0; a < NL; a++)
-            for (int b = 0; b < NL; b++) {
-                int sl = sm[a * NL + b];
-                if (sl < 0) continue;
-                double h = 0;
-                for (int r = 0; r < inc_n[a]; r++)
-                    for (int t = 0; t < inc_n[b]; t++)
-                        h += inc_c[a][r] * inc_c[b][t] * H[inc_v[a][r]][inc_v[b][t]];
-                K->val[sl] += h;
+        const double *Hf = H[0];
+        for (int ab = 0; ab < NL * NL; ab++) {
+            int sl = sm[ab];
+            if (sl < 0) continue;
+            const hess_plan *p = P + ab;
+            double h = 0 + p->c[0] * Hf[p->i[0]];
+            if (p->n > 1) {
+                h += p->c[1] * Hf[p->i[1]];
+                if (p->n > 2) h += p->c[2] * Hf[p->i[2]], h += p->c[3] * Hf[p->i[3]];
             }
+            K->val[sl] += h;
+        }
     }
 }
 
 int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, const double *q,
                       double *U, double *grad, gal_csc *K)
 {
+    hess_plan P[NL * NL];
+    if (K) plan_build(P);
     for (int i = 1; i <= rod->nn - 2; i++) {
         gal_rod_node nd;
         int st = gal_rod_node_geometry(rod, i, q, &nd);
@@ -80,7 +104,7 @@ int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, 
         if (K) memset(H, 0, sizeof H);
         for (int k = 0; k < nt; k++) E += t[k]->node(rod, i, q, &nd, g, K ? H : NULL);
         *U += E;
-        assemble(rod, i, g, H, grad, K);
+        assemble(rod, i, g, H, P, grad, K);
     }
     return GAL_OK;
 }

@@ -89,10 +89,14 @@ void gal_rod_twist_hessian(const gal_rod_node *nd, gal_rod_twist *s, double kt,
             Hm[3 + a][b] = X0[a][b] / (n0 * n1);
             Hm[3 + a][3 + b] = (X1[a][b] - Y1[a][b]) / (n1 * n1) - (s->gA[a] - s->gB1[a]) * t1[b] / (n1 * n1);
         }
+    /* the term is symmetric in a, b bit for bit (each product and sum commutes): computed once
+     * for b >= a, added to both entries */
     for (int a = 0; a < 8; a++)
-        for (int b = 0; b < 8; b++) {
+        for (int b = a; b < 8; b++) {
             double hm = (a < 6 && b < 6) ? 0.5 * (Hm[a][b] + Hm[b][a]) : 0.0;
-            H[a][b] += 2 * kt * (s->gm[a] * s->gm[b] + s->m * hm);
+            double h = 2 * kt * (s->gm[a] * s->gm[b] + s->m * hm);
+            H[a][b] += h;
+            if (b != a) H[b][a] += h;
         }
 }
 

@@ -5,10 +5,12 @@
  * evaluations of the set-up put under the ratio: at 1000 elements it evaluates the rod's tangent
  * 2 nsel times (the modal derivatives' central differences; K0 and its factorization are the
  * statics', gal_rom_opts.k0, as on the command line), and above 128 elements
- * the rod's gradient and the loads once per training state each (the fits' targets); each kind
+ * the rod's gradient and the loads once per training state each (the fits' targets; there
+ * gal_rom_opts.hyper_snapshots_fine states); each kind
  * timed alone here (median of 21), times its count, against the whole set-up at 100 elements.
- * Usage: bench_rom_setup [SCENE] (default tests/rom/drake_200_level_dshape.ini). Prints BENCH|
- * lines (make bench). */
+ * Usage: bench_rom_setup [SCENE [FINE]] (default tests/rom/drake_200_level_dshape.ini; FINE: the
+ * options' hyper_snapshots_fine, default 0: the library's default). Prints BENCH| lines (make
+ * bench). */
 #include "gallop.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
@@ -39,6 +41,8 @@ typedef struct {
     gal_force F;
 } mesh;
 
+static int fine; /* gal_rom_opts.hyper_snapshots_fine when > 0 (the command line's second argument) */
+
 static int init(mesh *M, const char *path, int nel)
 {
     char e[64];
@@ -61,6 +65,7 @@ static int init(mesh *M, const char *path, int nel)
     M->ro.rho_inf = M->sc.simulation.rho_inf;
     M->ro.damping = dt->damping;
     M->ro.k0 = dt->eq.k0; /* as the command line: the statics' K0 and its factorization */
+    if (fine > 0) M->ro.hyper_snapshots_fine = fine;
     memset(&M->F, 0, sizeof M->F);
     if (dt->loads.table) M->F.eval = gal_loads_full, M->F.element = gal_loads_element, M->F.ctx = (void *)&dt->loads;
     return 0;
@@ -104,6 +109,7 @@ static double whole(mesh *M, int k)
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "tests/rom/drake_200_level_dshape.ini";
+    fine = argc > 2 ? atoi(argv[2]) : 0;
     static mesh a, b;
     if (init(&a, path, 100) || init(&b, path, 1000)) return 1;
     enum { R = 21 };
@@ -111,13 +117,16 @@ int main(int argc, char **argv)
     for (int k = 0; k < R; k++)
         ta[k] = once(&a), tb[k] = once(&b);
     qsort(ta, R, sizeof(double), cmpd), qsort(tb, R, sizeof(double), cmpd);
-    printf("%s: set-up 100 el %.2f ms, 1000 el %.2f ms, ratio %.2f\n", path, 1e3 * ta[R / 2], 1e3 * tb[R / 2],
-           tb[R / 2] / ta[R / 2]);
+    printf("%s: set-up 100 el %.2f ms, 1000 el %.2f ms, ratio %.2f (training states at 1000 el: %d)\n", path,
+           1e3 * ta[R / 2], 1e3 * tb[R / 2], tb[R / 2] / ta[R / 2],
+           b.ro.hyper_snapshots_fine > 0 ? b.ro.hyper_snapshots_fine : b.ro.hyper_snapshots);
     printf("BENCH|reduced set-up alone at 100 elements (CPU, median of %d)|%.2f|ms|%s|\n", R, 1e3 * ta[R / 2], path);
     printf("BENCH|reduced set-up alone at 1000 elements (CPU, median of %d)|%.2f|ms|%s|\n", R, 1e3 * tb[R / 2], path);
     printf("BENCH|reduced set-up alone, 1000 over 100 elements (target <= 3)|%.2f|x|%s|\n", tb[R / 2] / ta[R / 2],
            path);
-    int nt = (b.ro.k0 ? 0 : 1) + 2 * b.r, ns = b.ro.hyper_snapshots, nl = b.F.element ? ns : 0;
+    /* the training states at 1000 elements: hyper_snapshots_fine (more than the 128 candidates) */
+    int nt = (b.ro.k0 ? 0 : 1) + 2 * b.r, ns = b.ro.hyper_snapshots_fine > 0 ? b.ro.hyper_snapshots_fine : b.ro.hyper_snapshots;
+    int nl = b.F.element ? ns : 0;
     double wk = whole(&b, 0), wg = whole(&b, 1), wl = b.F.eval ? whole(&b, 2) : 0, wf = nt * wk + ns * wg + nl * wl;
     printf("whole-mesh evaluations at 1000 el: %d tangents x %.3f + %d gradients x %.3f + %d loads x %.3f = %.2f ms "
            "= %.2f x the whole set-up at 100 el\n", nt, 1e3 * wk, ns, 1e3 * wg, nl, 1e3 * wl, 1e3 * wf, wf / ta[R / 2]);

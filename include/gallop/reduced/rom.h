@@ -86,6 +86,12 @@ typedef struct gal_rom_opts {
     double hyper_check_tol; /* gal_rom_hyper_check's tolerance before re-sampling; default 2e-2 */
     double hyper_twist;     /* rad: the twist amplitude of the training states; default 1.5 */
     int hyper_snapshots;    /* training states; default 24 */
+    int hyper_snapshots_fine; /* > 0: the training states on a mesh of more elements than the
+                             * training's candidates (ecsw.h: 128), where each state's targets cost
+                             * a whole-mesh evaluation of the rod and the loads; default 0: as
+                             * hyper_snapshots (12 makes the set-up at 1000 elements 3.1x its cost
+                             * at 100 instead of 4.2x, but moved condor_150_taut_dshape at 400
+                             * elements from 0.02% to 3.4% in vertical p-p: BENCHMARKS.md, setup3) */
     double hyper_check_interval; /* s: gal_rom_hyper_check every so often (default 1; 0: never) */
     double newton_contraction; /* a fresh tangent when an iteration gains less than this factor
                              * (default 0.1) */
