@@ -130,11 +130,17 @@ static int constants(gal_rom *m)
     return GAL_OK;
 }
 
-/* Both fits, the constants and the sampled entries from the training states held. */
-static int resample(gal_rom *m)
+/* The samples whose check failed (fail[0]: the rod's energy, then its constants; fail[1]: the
+ * loads') fitted again on the training states held, both from one pass when both failed; then the
+ * sampled entries. A sample that passed keeps its elements and weights. */
+static int resample(gal_rom *m, const int fail[2])
 {
-    int st = gal_rom_hyper_fit_all(m);
-    if (!st) st = constants(m);
+    gal_rom_hyper *h = m->hyper;
+    int st = GAL_OK;
+    if (fail[0] && fail[1]) st = gal_rom_hyper_fit_all(m);
+    else st = gal_rom_hyper_fit(m, fail[0] ? 0 : 1);
+    if (!st && fail[0]) st = constants(m);
+    for (int s = 0; s < 2 && !st; s++) h->set_refits[s] += fail[s] != 0;
     if (!st) st = sample_entries(m);
     return st;
 }
@@ -246,7 +252,7 @@ int gal_rom_hyper_copy(gal_rom *m, const gal_rom *from)
     memcpy(S->idx, F->idx, (size_t)F->n * NQ * sizeof(int)), memcpy(S->rw, F->rw, (size_t)r * sizeof(double));
     memcpy(h->fc, f->fc, (size_t)r * sizeof(double)), memcpy(h->Kc, f->Kc, (size_t)r * r * sizeof(double));
     memcpy(h->F0, f->F0, (size_t)r * sizeof(double));
-    h->Uc = f->Uc, h->amp = f->amp, h->mirror = f->mirror, h->refits = f->refits, h->check_error = f->check_error;
+    h->Uc = f->Uc, h->amp = f->amp, h->mirror = f->mirror, h->refits = f->refits, h->set_refits[0] = f->set_refits[0], h->set_refits[1] = f->set_refits[1], h->check_error = f->check_error;
     h->train_element_evals = f->train_element_evals, h->train_full_evals = f->train_full_evals;
     h->ns = h->cap = f->ns;
     if (f->emax && !(h->emax = dup(f->emax, (size_t)m->nmodes))) st = GAL_ENOMEM;
@@ -295,19 +301,22 @@ int gal_rom_hyper_check(gal_rom *m, double *err)
     h->whole_t = m->t, h->whole_has = h->loads ? 2 : 1;
     if ((st = gal_rom_hyper_internal(m, m->x, fb, NULL))) return st;
     for (int k = 0; k < r; k++) fb[k] -= fa[k], fa[k] -= h->F0[k];
-    double den = wnorm(h->set[0].rw, fa, r);
-    if (den > 0) e = wnorm(h->set[0].rw, fb, r) / den;
+    double den = wnorm(h->set[0].rw, fa, r), es[2] = {0, 0};
+    if (den > 0) es[0] = wnorm(h->set[0].rw, fb, r) / den;
     if (h->loads) {
         if ((st = gal_rom_hyper_external(m, m->t, m->x, m->v, fb))) return st;
         for (int k = 0; k < r; k++) fb[k] -= fl[k];
         den = wnorm(h->set[1].rw, fl, r);
-        if (den > 0) e = fmax(e, wnorm(h->set[1].rw, fb, r) / den);
+        if (den > 0) es[1] = wnorm(h->set[1].rw, fb, r) / den;
     }
+    e = fmax(es[0], es[1]);
     h->check_error = e;
     if (err) *err = e;
-    if (!(e > m->o.hyper_check_tol)) return GAL_OK;
-    /* re-sample with this state among the training states; the state's forces from the new sample */
-    if ((st = add_snapshot(h, r, m->x, m->v, m->t)) || (st = resample(m))) return st;
+    int fail[2] = {!(es[0] <= m->o.hyper_check_tol), h->loads && !(es[1] <= m->o.hyper_check_tol)};
+    if (!fail[0] && !fail[1]) return GAL_OK;
+    /* re-sample what failed with this state among the training states; the state's forces from the
+     * new samples */
+    if ((st = add_snapshot(h, r, m->x, m->v, m->t)) || (st = resample(m, fail))) return st;
     h->refits++;
     m->hJ = 0;
     if ((st = gal_rom_hyper_internal(m, m->x, m->fi, NULL))) return st;
@@ -352,6 +361,7 @@ void gal_rom_hyper_get_info(const gal_rom *m, gal_rom_hyper_info *info)
     info->load_elements = h->loads ? h->set[1].n : -1;
     info->snapshots = h->ns;
     info->refits = h->refits;
+    info->refits_energy = h->set_refits[0], info->refits_loads = h->set_refits[1];
     info->fit_error = h->set[0].fit_error;
     info->load_fit_error = h->loads ? h->set[1].fit_error : 0;
     info->mirror = h->mirror;

@@ -46,7 +46,8 @@ typedef struct gal_rom_hyper {
     double *gu;                /* nq: scratch of the projections */
     double *T;                 /* GAL_ROD_ELEMENT_NQ x r: scratch of the tangent */
     int mirror;                /* mirror pairs share one weight (a symmetric span) */
-    int refits;
+    int refits;                /* re-samplings after a failed check */
+    int set_refits[2];         /* of them, the fits of each sample (0: the rod's, 1: the loads') */
     double check_error;
     long train_element_evals;  /* element evaluations of the fits' candidate columns, in all */
     long train_full_evals;     /* evaluations of the whole rod or loads for the fits' targets */

@@ -38,6 +38,8 @@ typedef struct gal_rom_hyper_info {
     int load_elements;     /* sampled elements of the aerodynamic loads */
     int snapshots;         /* training states */
     int refits;            /* re-samplings after a failed check */
+    int refits_energy;     /* of them, those that fitted the rod's sample again (its check failed) */
+    int refits_loads;      /* and the loads' (only the failing sample is fitted again) */
     double fit_error;      /* the NNLS residual of the rod's sample, relative */
     double load_fit_error; /* and of the loads' */
     int mirror;            /* the samples are mirror pairs */
