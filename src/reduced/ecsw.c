@@ -130,11 +130,22 @@ static int constants(gal_rom *m)
     return GAL_OK;
 }
 
-/* Both fits, the constants and the sampled entries from the training states held. */
-static int resample(gal_rom *m)
+#define LOADS_WHOLE 0.5
+
+/* The samples fitted again on the training states held after a failed check (fail[0]: the rod's
+ * energy, fail[1]: the loads'): the rod's failing, both (one pass) and the constants, as before;
+ * the loads' alone failing (turbulent wind: BENCHMARKS.md, helper turbsample), the loads' alone, the
+ * rod's sample and constants left as they were. Then the sampled entries. */
+static int resample(gal_rom *m, const int fail[2])
 {
-    int st = gal_rom_hyper_fit_all(m);
-    if (!st) st = constants(m);
+    gal_rom_hyper *h = m->hyper;
+    int st = fail[0] ? gal_rom_hyper_fit_all(m) : gal_rom_hyper_fit(m, 1);
+    if (!st && fail[0]) st = constants(m);
+    if (!st) h->set_refits[0] += fail[0], h->set_refits[1] += h->loads;
+    /* a loads' sample of more than LOADS_WHOLE of the edges saves little over the whole loads and
+     * re-fits on: from now on the loads over every edge (a load field that varies along the span at
+     * random, turbulent wind, needs most of them: BENCHMARKS.md, helper turbsample) */
+    if (!st && fail[1] && h->set[1].n > LOADS_WHOLE * m->rod->p.elements) h->loads = 0, h->set[1].n = 0, h->loads_whole = 1;
     if (!st) st = sample_entries(m);
     return st;
 }
@@ -246,7 +257,7 @@ int gal_rom_hyper_copy(gal_rom *m, const gal_rom *from)
     memcpy(S->idx, F->idx, (size_t)F->n * NQ * sizeof(int)), memcpy(S->rw, F->rw, (size_t)r * sizeof(double));
     memcpy(h->fc, f->fc, (size_t)r * sizeof(double)), memcpy(h->Kc, f->Kc, (size_t)r * r * sizeof(double));
     memcpy(h->F0, f->F0, (size_t)r * sizeof(double));
-    h->Uc = f->Uc, h->amp = f->amp, h->mirror = f->mirror, h->refits = f->refits, h->check_error = f->check_error;
+    h->Uc = f->Uc, h->amp = f->amp, h->mirror = f->mirror, h->refits = f->refits, h->set_refits[0] = f->set_refits[0], h->set_refits[1] = f->set_refits[1], h->check_error = f->check_error;
     h->train_element_evals = f->train_element_evals, h->train_full_evals = f->train_full_evals;
     h->ns = h->cap = f->ns;
     if (f->emax && !(h->emax = dup(f->emax, (size_t)m->nmodes))) st = GAL_ENOMEM;
@@ -295,24 +306,29 @@ int gal_rom_hyper_check(gal_rom *m, double *err)
     h->whole_t = m->t, h->whole_has = h->loads ? 2 : 1;
     if ((st = gal_rom_hyper_internal(m, m->x, fb, NULL))) return st;
     for (int k = 0; k < r; k++) fb[k] -= fa[k], fa[k] -= h->F0[k];
-    double den = wnorm(h->set[0].rw, fa, r);
-    if (den > 0) e = wnorm(h->set[0].rw, fb, r) / den;
+    double den = wnorm(h->set[0].rw, fa, r), es[2] = {0, 0};
+    if (den > 0) es[0] = wnorm(h->set[0].rw, fb, r) / den;
     if (h->loads) {
         if ((st = gal_rom_hyper_external(m, m->t, m->x, m->v, fb))) return st;
         for (int k = 0; k < r; k++) fb[k] -= fl[k];
         den = wnorm(h->set[1].rw, fl, r);
-        if (den > 0) e = fmax(e, wnorm(h->set[1].rw, fb, r) / den);
+        if (den > 0) es[1] = wnorm(h->set[1].rw, fb, r) / den;
     }
+    e = h->loads ? fmax(es[0], es[1]) : es[0];
     h->check_error = e;
     if (err) *err = e;
-    if (!(e > m->o.hyper_check_tol)) return GAL_OK;
-    /* re-sample with this state among the training states; the state's forces from the new sample */
-    if ((st = add_snapshot(h, r, m->x, m->v, m->t)) || (st = resample(m))) return st;
+    int fail[2] = {es[0] > m->o.hyper_check_tol, h->loads && es[1] > m->o.hyper_check_tol};
+    if (!(e <= m->o.hyper_check_tol) && !fail[1]) fail[0] = 1; /* NaN: both, as before */
+    if (!fail[0] && !fail[1]) return GAL_OK;
+    /* re-sample what failed with this state among the training states; the state's forces from the
+     * new samples */
+    if ((st = add_snapshot(h, r, m->x, m->v, m->t)) || (st = resample(m, fail))) return st;
     h->refits++;
     m->hJ = 0;
     if ((st = gal_rom_hyper_internal(m, m->x, m->fi, NULL))) return st;
     m->U = m->U1;
     if (h->loads && (st = gal_rom_hyper_external(m, m->t, m->x, m->v, m->fe))) return st;
+    if (!h->loads && fail[1] && (st = gal_rom_eval_external(m, m->t, m->x, m->v, m->fe))) return st; /* whole since */
     return GAL_OK;
 }
 
@@ -352,6 +368,7 @@ void gal_rom_hyper_get_info(const gal_rom *m, gal_rom_hyper_info *info)
     info->load_elements = h->loads ? h->set[1].n : -1;
     info->snapshots = h->ns;
     info->refits = h->refits;
+    info->refits_energy = h->set_refits[0], info->refits_loads = h->set_refits[1], info->loads_whole = h->loads_whole;
     info->fit_error = h->set[0].fit_error;
     info->load_fit_error = h->loads ? h->set[1].fit_error : 0;
     info->mirror = h->mirror;

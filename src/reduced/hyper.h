@@ -36,6 +36,8 @@ typedef struct gal_rom_hyper_set {
 typedef struct gal_rom_hyper {
     gal_rom_hyper_set set[2];  /* 0: the rod's energy, 1: the aerodynamic loads */
     int loads;                 /* the loads are sampled (gal_force.element given) */
+    int loads_whole;           /* the loads' sample grew past LOADS_WHOLE of the edges (ecsw.c): the
+                                * loads over every edge since */
     double *fc, Uc, *Kc;       /* r, J, r x r: the constants that make U_h, its gradient and its
                                 * Hessian exact at x = 0: U_h = U_c + f_c.x + x.K_c x/2 + sum w U_e */
     double *F0;                /* r: V^T grad U(q_eq) */
@@ -46,7 +48,8 @@ typedef struct gal_rom_hyper {
     double *gu;                /* nq: scratch of the projections */
     double *T;                 /* GAL_ROD_ELEMENT_NQ x r: scratch of the tangent */
     int mirror;                /* mirror pairs share one weight (a symmetric span) */
-    int refits;
+    int refits;                /* re-samplings after a failed check */
+    int set_refits[2];         /* of them, the fits of each sample (0: the rod's, 1: the loads') */
     double check_error;
     long train_element_evals;  /* element evaluations of the fits' candidate columns, in all */
     long train_full_evals;     /* evaluations of the whole rod or loads for the fits' targets */

@@ -38,6 +38,11 @@ typedef struct gal_rom_hyper_info {
     int load_elements;     /* sampled elements of the aerodynamic loads */
     int snapshots;         /* training states */
     int refits;            /* re-samplings after a failed check */
+    int refits_energy;     /* of them, those that fitted the rod's sample again (its check failed:
+                           * both samples fitted again) */
+    int refits_loads;      /* and the loads' (with the rod's, or alone when only theirs failed) */
+    int loads_whole;       /* the loads' sample grew past half the edges at a re-fit: the loads
+                           * over every edge since (load_elements -1) */
     double fit_error;      /* the NNLS residual of the rod's sample, relative */
     double load_fit_error; /* and of the loads' */
     int mirror;            /* the samples are mirror pairs */
