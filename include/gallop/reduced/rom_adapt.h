@@ -128,7 +128,7 @@ void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double 
  * tests/rom/partridge_180_dshape.ini at 100 elements rang 2.3 deg of twist at 11.7 Hz (the full
  * model 0.003 deg) and ended 21% off in twist with the residual at 0.004-0.05; the reading there
  * 0.13-0.37 (125 elements up to 0.42, 14 m/s 0.27 at its trip), grosbeak_300_soft_gj's third-order set (within)
- * 0.055 / 0.036 at 100 / 125 elements. Not read on a basis without that set: a grown torsional mode
+ * 0.036-0.058 at 100 and 125 elements. Not read on a basis without that set: a grown torsional mode
  * (a rod mode) rings while a growth's transient decays, and a run that ends within read 0.23-0.56
  * there (partridge at 40 elements and at 150 m; BENCHMARKS.md, issue 13, helper partridge). A trip
  * by it is not grown on (past the third-order set nothing is): the run is refused
