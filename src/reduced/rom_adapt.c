@@ -4,6 +4,7 @@
 #include "gallop/reduced/rom_adapt.h"
 #include "gallop/base/core.h"
 #include "gallop/base/sparse.h"
+#include "gallop/model/damping.h"
 #include "base/chol.h"
 #include "reduced/adapt.h"
 
@@ -67,6 +68,26 @@ static int cubic_check(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk)
     return GAL_OK;
 }
 
+/* The twist's ringing above the damping band (rom_adapt.h, GAL_ROM_BAND_WEIGHT) into chk->ring and
+ * the torsional residual, once the basis holds the third-order set; the band's modes recomputed
+ * when the basis changed. */
+static int band_check(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk)
+{
+    int t = GAL_FAMILY_TORSIONAL;
+    if (!a->third || m->t < GAL_ROM_CUBIC_SETTLE_S || !(chk->scale[t] > 0)) return GAL_OK;
+    if (a->band.r != m->r || a->band_events != a->nevents || !a->band.y) {
+        const gal_damping *d = a->o.damping;
+        int st = gal_rom_band_init(m, d && d->band_hz > 0 ? d->band_hz : GAL_DAMPING_BAND_HZ, &a->band);
+        if (st) return st;
+        a->band_events = a->nevents;
+    }
+    double amp[GAL_FAMILY_COUNT];
+    gal_rom_band_amplitude(m, &a->band, amp);
+    chk->ring = GAL_ROM_BAND_WEIGHT * amp[t] / chk->scale[t];
+    chk->rel[t] = fmax(chk->rel[t], chk->ring);
+    return GAL_OK;
+}
+
 int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, double *du)
 {
     int st = gal_rom_residual_dir(m, chk, du);
@@ -76,6 +97,7 @@ int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, dou
     chk->scale[t] = GAL_ROM_TWIST_WEIGHT * fmax(a->amp[t], a->twist_floor);
     chk->rel[t] = chk->scale[t] > 0 ? chk->err[t] / chk->scale[t] : 0;
     if ((st = cubic_check(a, m, chk))) return st;
+    if ((st = band_check(a, m, chk))) return st;
     chk->max = 0;
     for (int f = 0; f < GAL_FAMILY_COUNT; f++) chk->max = fmax(chk->max, chk->rel[f]);
     return GAL_OK;
@@ -90,6 +112,7 @@ void gal_rom_adapt_clear(gal_rom_adapt *a)
 {
     free(a->extra);
     gal_modes_clear(&a->own);
+    gal_rom_band_clear(&a->band);
     memset(a, 0, sizeof *a);
 }
 
@@ -360,6 +383,12 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
     int st = GAL_OK, mode = -1, corr = 0, cubic = f <= GAL_FAMILY_HORIZONTAL && chk->rel[f] == chk->cubic[f] / GAL_ROM_CUBIC_SHARE;
     int nsel_was = a->nsel, nextra_was = a->nextra;
     double t = old->t, *q = NULL;
+    if (f == GAL_FAMILY_TORSIONAL && chk->ring > 0 && chk->rel[f] == chk->ring) { /* rom_adapt.h: not grown on */
+        gal_error(GAL_EFAIL, "the basis (%d vectors) rings undamped: its reduced modes above the damping's band carry "
+                  "a twist of %.3g of the twist's scale (times %g) that the full model does not hold", old->r,
+                  chk->ring / GAL_ROM_BAND_WEIGHT, GAL_ROM_BAND_WEIGHT);
+        return GAL_ROM_ELIMIT;
+    }
     if (cubic) {
         if ((st = third_growth(a, old, chk, f, &corr))) return st;
     } else if (a->third) { /* past the third-order set, a correction or mode is not grown (rom_adapt.h) */

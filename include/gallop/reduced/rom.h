@@ -159,6 +159,9 @@ typedef struct gal_rom_check {
                                         * residual R, the load F and the damping force C v */
     double cubic[GAL_FAMILY_COUNT]; /* the cubic indicator (gal_rom_cubic) over scale, per family
                                      * (filled by gal_rom_adapt_residual; 0 otherwise) */
+    double ring;            /* the twist's ringing above the damping band (gal_rom_band_amplitude)
+                             * over the twist's scale, times GAL_ROM_BAND_WEIGHT (filled by
+                             * gal_rom_adapt_residual; 0 otherwise) */
 } gal_rom_check;
 
 typedef struct gal_rom {
@@ -305,10 +308,9 @@ int gal_rom_residual(gal_rom *m, gal_rom_check *chk);
  * tenths of a percent to percents off the rod's; data/scenes/iced_gallop.ini at 600 elements rang
  * 1.6 deg of twist at 6.38 Hz where the full model has 5e-5 deg, and the residual did not see it
  * (the cause, a growth's correction carrying stiff translations into the twist's Ritz vector, is
- * fixed: gal_rom_residual_family).
- * A diagnostic: not (yet) part of the self-check, whose refusal it cannot yet decide soundly
- * (BENCHMARKS.md, issue 13, helper growth2: the reading on correct runs comes within 15% of the
- * wrong one's). */
+ * fixed: gal_rom_residual_family). The self-check reads the twist's part (rom_adapt.h,
+ * GAL_ROM_BAND_WEIGHT): tests/rom/partridge_180_dshape.ini's third-order set rings 2.3 deg at
+ * 11.7 Hz (BENCHMARKS.md, issue 13, helper partridge). */
 typedef struct gal_rom_band {
     int r, n;               /* basis size it was computed for; modes above the band */
     double *y;              /* r x n: the modes' reduced shapes (owns the block) */

@@ -62,6 +62,9 @@ typedef struct gal_rom_adapt {
                              * GAL_ROM_CUBIC_EVERY-th) */
     int nsel0, nextra0;     /* the initial selection's modes and the caller's extra vectors */
     int third;              /* third-order modal derivatives in the basis (0: none; see below) */
+    gal_rom_band band;      /* the model's reduced modes above the damping band (GAL_ROM_BAND_WEIGHT),
+                             * for the basis of band.r vectors after band_events growths */
+    int band_events;
     /* Optional: called during a growth's replay (gal_rom_adapt_replay_from) at each multiple i of
      * replay_dt (> 0) before the failing check's time, with the grown model there, so that a run's
      * record up to the growth is the grown model's, not the one the check refused. */
@@ -115,6 +118,22 @@ void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double 
 /* Read at every this-th check: it costs two tangents of the whole rod, about twice the residual
  * (tests/bench/bench_rom_step.c: 119 us against 59 at 100 elements); the orbit it watches repeats. */
 #define GAL_ROM_CUBIC_EVERY 3
+/* And, once the basis holds the third-order set, the twist's ringing in the reduced modes above the
+ * structural damping's band (rom.h gal_rom_band_amplitude: the amplitude a mode ringing at its
+ * frequency has, from the velocity and the acceleration) against the twist's scale, times
+ * GAL_ROM_BAND_WEIGHT, from GAL_ROM_CUBIC_SETTLE_S on, taken as the torsional residual where larger
+ * (gal_rom_check.ring). The third-order vectors are stiff (Rayleigh frequencies to ~300 Hz) and no
+ * rod modes: a Ritz vector among them that rings is nearly an eigenvector of the reduced equations,
+ * its residual small while the twist it carries is not the full model's (no damping stops it):
+ * tests/rom/partridge_180_dshape.ini at 100 elements rang 2.3 deg of twist at 11.7 Hz (the full
+ * model 0.003 deg) and ended 21% off in twist with the residual at 0.004-0.05; the reading there
+ * 0.13-0.37 (125 elements up to 0.42, 14 m/s 0.27 at its trip), grosbeak_300_soft_gj's third-order set (within)
+ * 0.036-0.058 at 100 and 125 elements. Not read on a basis without that set: a grown torsional mode
+ * (a rod mode) rings while a growth's transient decays, and a run that ends within read 0.23-0.56
+ * there (partridge at 40 elements and at 150 m; BENCHMARKS.md, issue 13, helper partridge). A trip
+ * by it is not grown on (past the third-order set nothing is): the run is refused
+ * (GAL_ROM_ELIMIT). */
+#define GAL_ROM_BAND_WEIGHT 0.5
 int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, double *du);
 
 /* Grow the basis of *m after the check chk (du: its correction direction, ndof) failed at the
