@@ -7,7 +7,7 @@
 # from the start (236.65 s here), and the run's record before the growth is the grown model's run
 # from the start, not the refused model's (within issue 13's figures on 300-400 s at 100 and 125
 # elements: BENCHMARKS.md, helper soft; a full-model comparison takes ~25 s, not run here).
-#  - 240 s: exit 0, valid, one growth adding the 56 third-order derivatives;
+#  - 240 s: exit 0, valid, one growth adding the 56 third-order derivatives, said on stderr with its cost;
 #  - the record up to 230 s differs from the same run stopped at 230 s (before the growth: the model
 #    that the check later refuses), so it was rewritten by the replay.
 # The spans within the issue's figures never trip the cubic part (test_cli_rom.sh, test_rom_spans);
@@ -25,8 +25,14 @@ if [ $rc -eq 0 ] && grep -q '"valid": true' "$tmp/a/summary.json" && grep -q '"c
 else
   bad "grosbeak at 100 elements, 240 s: exit $rc: $(cat "$tmp/err"; grep -o '"valid": [a-z]*' "$tmp/a/summary.json" 2>/dev/null)"
 fi
+# the growth said on stderr: from 27 to 79 vectors, and what a basis that large costs
+grep -q "note: the reduced basis grew from 27 to 79 vectors in [0-9]* growths" "$tmp/err" && grep -q "costs several times" "$tmp/err" \
+  && ok "the growth to 79 vectors said on stderr, with its cost" || bad "no growth note: $(cat "$tmp/err")"
 "$GALLOP" simulate "$scene" --model reduced --set simulation.duration=230 -o "$tmp/b" >/dev/null 2>"$tmp/err"
 rc=$?
+# before the third-order set: grown, but not to twice the start (no cost line)
+grep -q "note: the reduced basis grew from 27 to" "$tmp/err" && ! grep -q "costs several times" "$tmp/err" \
+  && ok "230 s: the growths said, no cost line under twice the start" || bad "230 s: $(cat "$tmp/err")"
 # largest |difference| of the mid-span vertical and twist over the rows of t <= 230 s
 diff=$(awk -F, 'NR == FNR { if (FNR > 1) { v[$1] = $3; w[$1] = $5 }; next }
   FNR > 1 && ($1 in v) && $1 + 0 <= 230 { d = $3 - v[$1]; if (d < 0) d = -d; if (d > dv) dv = d;

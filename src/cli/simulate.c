@@ -41,6 +41,20 @@ static void warn_invalid(const char *cmd, const gal_scene *sc, const gal_sim_res
                 sc->model.residual_tolerance);
 }
 
+/* A reduced run whose basis grew says so: how far, when last and in what family; a basis twice its
+ * start or more costs several times as much a step (BENCHMARKS.md: the third-order set 17-21x), which
+ * the engineer should weigh against the full model's time. */
+static void note_growth(const char *cmd, const gal_sim_result *r)
+{
+    if (!r->checked || r->growths <= 0) return;
+    const gal_rom_event *e = &r->growth[r->growths - 1];
+    fprintf(stderr, "gallop %s: note: the reduced basis grew from %d to %d vectors in %d growth%s (the last at %.4g s, "
+            "%s family; summary.json: basis_growths)%s\n", cmd, r->basis_start, r->basis, r->growths,
+            r->growths > 1 ? "s" : "", e->t_s, gal_family_names[e->family],
+            r->basis >= 2 * r->basis_start ? "; a step of a basis this large costs several times the initial one's: "
+                                             "weigh the run's time against the full model's (--model full)" : "");
+}
+
 /* The full model's results alone, when the reduced model of `compare` failed; exit 1. */
 static int compare_full_only(const char *outdir, const gal_scene *sc, const gal_sim_result *full)
 {
@@ -104,6 +118,7 @@ int gal_cli_simulate(int argc, char **argv)
         print_run(T->name, &r, &ms);
         printf("files: %s/{trace.csv,summary.json}\n", outdir);
         warn_invalid("simulate", &sc, &r);
+        note_growth("simulate", &r);
         warn_domain("simulate", &sc, d, ms.frequency_hz[1]);
     }
     gal_sim_result_clear(&r);
@@ -142,6 +157,7 @@ int gal_cli_compare(int argc, char **argv)
         gal_cli_print_compare(&c, "twist", red.build_time_s);
         printf("files: %s/{compare.csv,summary.json}\n", outdir);
         warn_invalid("compare", &sc, &red);
+        note_growth("compare", &red);
         warn_domain("compare", &sc, d, c.full.frequency_hz[1]);
     }
     gal_sim_result_clear(&full);
