@@ -122,7 +122,8 @@ static int basis_at(work *w, const gal_rod *rod, const double *q, const gal_load
          * modes asked for here): ask for more, kept for the next speeds, up to every mode */
         if (k == w->nb || w->nev >= n - 1) break;
         gal_modes_clear(&md);
-        w->nev = w->nev + (w->nev / 2 > 20 ? w->nev / 2 : 20) < n - 1 ? w->nev + (w->nev / 2 > 20 ? w->nev / 2 : 20) : n - 1;
+        int more = w->nev + (w->nev / 2 > 20 ? w->nev / 2 : 20);
+        w->nev = more < n - 1 ? more : n - 1;
     }
     sp->zeta_vertical = NAN, sp->den_hartog_onset = NAN;
     for (int j = 0; j < md.n; j++)

@@ -29,50 +29,19 @@ static void sample(const gal_rom *m, const gal_sim_result *res, long i)
     gal_rom_observe(m, res->nprobe, res->probe, res->trace + (size_t)i * 4 * res->nprobe, res->tension + 2 * i);
 }
 
-/* A growth's replay (rom_adapt.h replay_observe): the grown model's samples before the growth,
- * kept apart until the growth has succeeded (a failed one leaves the record as it was). */
-typedef struct {
-    const gal_sim_result *res;
-    double *row;  /* nsamples x (4 nprobe + 2), or NULL until the first growth */
-    long n;       /* rows observed by the current replay */
-    double taut;  /* the least taut share over them */
-    int failed;   /* out of memory: the record is left as it was */
-} redo_buf;
-
-static void replay_observe(void *ctx, const gal_rom *m, long i)
-{
-    redo_buf *b = ctx;
-    const gal_sim_result *res = b->res;
-    long w = 4L * res->nprobe + 2;
-    if (i >= res->nsamples || b->failed) return;
-    if (!b->row && !(b->row = malloc((size_t)res->nsamples * w * sizeof(double)))) { b->failed = 1; return; }
-    if (i == 0) b->n = 0, b->taut = 1;
-    double *r = b->row + (size_t)i * w;
-    gal_rom_observe(m, res->nprobe, res->probe, r, r + 4 * res->nprobe);
-    b->taut = fmin(b->taut, gal_rom_taut_share(m));
-    if (i + 1 > b->n) b->n = i + 1;
-}
-
 /* The check at the state reached (sample i): past tol the basis grows (once per check); after a
  * growth run again from the start, the record before sample i is the grown model's, and the taut
  * share the least over it, as a run of the grown model from the start would give them. */
 static int check(gal_rom_adapt *a, gal_rom **m, double tol, gal_rom_sim_info *info, double *du,
-                 gal_sim_result *res, redo_buf *redo, long i)
+                 gal_sim_result *res, gal_rom_redo *redo, long i)
 {
     gal_rom_check chk;
     int st = gal_rom_adapt_residual(a, *m, &chk, du);
     if (st) return st;
     info->checks++;
     if (tol > 0 && chk.max > tol) {
-        redo->n = 0;
         st = gal_rom_adapt_grow(a, m, &chk, du);
-        if (st == GAL_OK && a->q0 && !redo->failed && redo->n == i) {
-            long w = 4L * res->nprobe + 2;
-            for (long k = 0; k < i; k++) {
-                const double *r = redo->row + (size_t)k * w;
-                memcpy(res->trace + (size_t)k * 4 * res->nprobe, r, (size_t)4 * res->nprobe * sizeof(double));
-                memcpy(res->tension + 2 * k, r + 4 * res->nprobe, 2 * sizeof(double));
-            }
+        if (st == GAL_OK && a->q0 && gal_rom_redo_apply(redo, i, res->trace, res->tension) == i) {
             sample(*m, res, i);
             info->taut_share = fmin(redo->taut, gal_rom_taut_share(*m));
         }
@@ -92,8 +61,9 @@ static int run_loop(gal_rom_adapt *a, gal_rom **m, const gal_rom_sim_opts *o, do
     double next_check = o->check_from;
     double *du = malloc((size_t)a->rod->ndof * sizeof(double));
     if (!du) return gal_error(GAL_ENOMEM, "reduced run: out of memory");
-    redo_buf redo = {.res = res, .taut = 1};
-    if (a->q0) a->replay_observe = replay_observe, a->replay_ctx = &redo, a->replay_dt = res->dt_out;
+    gal_rom_redo redo;
+    gal_rom_redo_init(&redo, res->nprobe, res->probe, 1);
+    if (a->q0) a->replay_observe = gal_rom_redo_observe, a->replay_ctx = &redo, a->replay_dt = res->dt_out;
     int st = GAL_OK;
     for (long i = 0; i < res->nsamples && !st; i++) {
         for (int k = 0; k < sub && i > 0 && !st; k++) st = gal_rom_step(*m);
@@ -106,7 +76,7 @@ static int run_loop(gal_rom_adapt *a, gal_rom **m, const gal_rom_sim_opts *o, do
         }
     }
     free(du);
-    free(redo.row);
+    gal_rom_redo_clear(&redo);
     a->replay_observe = NULL, a->replay_ctx = NULL;
     return st;
 }

@@ -41,9 +41,7 @@ typedef struct {
     int setup_reused;       /* the wind-independent set-up was the data's (an earlier run's) */
     double setup_time_s;    /* s: that set-up's wall time when this run made it */
     double *turb;           /* the turbulent wind's load shapes (rom_turb.h), or NULL */
-    double *redo;           /* the samples a growth's replay observed (4 nprobe + 2 each), or NULL */
-    long nredo, capredo;    /* how many since the last rewrite; room for */
-    int redo_failed;        /* out of memory for them: the record keeps the old model's */
+    gal_rom_redo redo;      /* the samples a growth's replay observed, until the next rewrite */
 } rom_state;
 
 static void rom_free(void *state)
@@ -54,37 +52,15 @@ static void rom_free(void *state)
     gal_rom_adapt_clear(&s->adapt);
     free(s->du);
     free(s->turb);
-    free(s->redo);
+    gal_rom_redo_clear(&s->redo);
     free(s);
-}
-
-/* A growth's replay at sample i (rom_adapt.h replay_observe): the grown model observed there. */
-static void replay_observe(void *ctx, const gal_rom *m, long i)
-{
-    rom_state *s = ctx;
-    long w = 4L * s->m->nprobe + 2;
-    if (i >= s->capredo) {
-        long cap = 2 * i + 64;
-        double *p = realloc(s->redo, (size_t)cap * w * sizeof(double));
-        if (!p) { s->redo_failed = 1; return; }
-        s->redo = p, s->capredo = cap;
-    }
-    double *row = s->redo + (size_t)i * w;
-    gal_rom_observe(m, s->m->nprobe, s->m->probe, row, row + 4 * s->m->nprobe);
-    if (i + 1 > s->nredo) s->nredo = i + 1;
 }
 
 /* The replayed samples over the record's (integrator.h rewrite). */
 static void rom_rewrite(void *state, long i, double *trace, double *tension)
 {
     rom_state *s = state;
-    int np = s->m->nprobe;
-    long w = 4L * np + 2;
-    for (long j = 0; j < s->nredo && j < i && !s->redo_failed; j++) {
-        memcpy(trace + (size_t)j * 4 * np, s->redo + (size_t)j * w, (size_t)4 * np * sizeof(double));
-        memcpy(tension + 2 * j, s->redo + (size_t)j * w + 4 * np, 2 * sizeof(double));
-    }
-    s->nredo = 0, s->redo_failed = 0;
+    gal_rom_redo_apply(&s->redo, i, trace, tension);
 }
 
 /* The data's wind-independent set-up of the reduced model into ro->setup: made now (and kept by
@@ -146,7 +122,8 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
         return st;
     }
     gal_rom_adapt_replay_from(&s->adapt, d->q_start, d->v_start);
-    s->adapt.replay_observe = replay_observe, s->adapt.replay_ctx = s, s->adapt.replay_dt = dt_out;
+    gal_rom_redo_init(&s->redo, s->m->nprobe, s->m->probe, 0);
+    s->adapt.replay_observe = gal_rom_redo_observe, s->adapt.replay_ctx = &s->redo, s->adapt.replay_dt = dt_out;
     s->basis_start = s->rom->r;
     s->setup_reused = s->setup_reused && s->rom->setup_reused;
     if ((st = gal_rom_start(s->rom, 0.0, d->q_start, d->v_start))) {

@@ -73,6 +73,28 @@ typedef struct gal_rom_adapt {
     double replay_dt;
 } gal_rom_adapt;
 
+/* The samples a growth's replay observes, kept apart until the growth has succeeded and then laid
+ * over the run's record (the command line's run and the library's, rom_sim.h): replay_observe =
+ * gal_rom_redo_observe with replay_ctx = the gal_rom_redo. A row is the probes' 4 nprobe entries
+ * and the 2 support tensions, as gal_rom_observe writes them. */
+typedef struct gal_rom_redo {
+    int nprobe;
+    const double *probe;    /* fractions of the span (not owned) */
+    int want_taut;          /* 1: the least taut share over the rows into taut */
+    double *row;            /* cap rows, or NULL */
+    long n, cap;            /* rows observed by the current replay; room for */
+    double taut;            /* the least gal_rom_taut_share over them (want_taut) */
+    int failed;             /* out of memory for them: the record keeps the old model's */
+} gal_rom_redo;
+
+void gal_rom_redo_init(gal_rom_redo *r, int nprobe, const double *probe, int want_taut);
+/* rom_adapt.h replay_observe: the grown model at sample i (i = 0 starts a replay) */
+void gal_rom_redo_observe(void *ctx, const gal_rom *m, long i);
+/* The rows before sample i over trace (4 nprobe a row) and tension (2 a row); how many were laid
+ * (none when out of memory); the rows are then spent (taut is kept). */
+long gal_rom_redo_apply(gal_rom_redo *r, long i, double *trace, double *tension);
+void gal_rom_redo_clear(gal_rom_redo *r);
+
 /* The adaptation's set-up from the model's (the same arguments as gal_rom_alloc, copied; rod,
  * q_eq, md and o's damping must outlive it) and the model on the initial basis into *m. */
 int gal_rom_adapt_init(gal_rom_adapt *a, gal_rom **m, const gal_rod *rod, const double *q_eq, const gal_modes *md,
