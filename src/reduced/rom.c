@@ -11,6 +11,43 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* s += V y (and t += V z when z) over V's columns k0 .. k1-1, one at a time: each entry's sum over
+ * the columns in order, a column whose coefficient is 0 left out (it adds +-0) */
+static void accumulate_columns(const double *V, int n, int k0, int k1, const double *y, const double *z, double *s,
+                               double *t)
+{
+    for (int k = k0; k < k1; k++) {
+        const double *vk = V + (size_t)k * n;
+        if (y[k] != 0)
+            for (int d = 0; d < n; d++) s[d] += vk[d] * y[k];
+        if (z && z[k] != 0)
+            for (int d = 0; d < n; d++) t[d] += vk[d] * z[k];
+    }
+}
+
+/* accumulate_columns over V's r columns with its numbers, four columns a pass over the entries
+ * where none of their coefficients is 0 (V read once for both vectors, s and t once a pass) */
+static void accumulate(const double *V, int n, int r, const double *y, const double *z, double *s, double *t)
+{
+    int k = 0;
+    for (; k + 4 <= r; k += 4) {
+        const double *v0 = V + (size_t)k * n, *v1 = v0 + n, *v2 = v1 + n, *v3 = v2 + n;
+        double y0 = y[k], y1 = y[k + 1], y2 = y[k + 2], y3 = y[k + 3];
+        int yall = y0 != 0 && y1 != 0 && y2 != 0 && y3 != 0;
+        if (yall && z && z[k] != 0 && z[k + 1] != 0 && z[k + 2] != 0 && z[k + 3] != 0) {
+            double z0 = z[k], z1 = z[k + 1], z2 = z[k + 2], z3 = z[k + 3];
+            for (int d = 0; d < n; d++) {
+                double a = v0[d], b = v1[d], c = v2[d], e = v3[d];
+                s[d] = s[d] + a * y0 + b * y1 + c * y2 + e * y3;
+                t[d] = t[d] + a * z0 + b * z1 + c * z2 + e * z3;
+            }
+        } else if (yall && !z) {
+            for (int d = 0; d < n; d++) s[d] = s[d] + v0[d] * y0 + v1[d] * y1 + v2[d] * y2 + v3[d] * y3;
+        } else accumulate_columns(V, n, k, k + 4, y, z, s, t);
+    }
+    accumulate_columns(V, n, k, r, y, z, s, t);
+}
+
 /* q = q_eq + V x over the free dofs (m->q); the velocity V xd into m->vq when xd != NULL (on the
  * manifold: q_eq + u(x), P(x) xd). */
 static void reconstruct(gal_rom *m, const double *x, const double *xd)
@@ -26,13 +63,9 @@ static void reconstruct(gal_rom *m, const double *x, const double *xd)
         }
         return;
     }
-    double *s = m->wn, *sv = m->wn2; /* the sums over the columns in order, a column at a time */
+    double *s = m->wn, *sv = m->wn2;
     memset(s, 0, (size_t)n * sizeof(double)), memset(sv, 0, (size_t)n * sizeof(double));
-    for (int k = 0; k < r; k++) {
-        const double *vk = m->V + (size_t)k * n;
-        if (x[k] != 0) for (int d = 0; d < n; d++) s[d] += vk[d] * x[k]; /* a 0 adds +-0 */
-        if (xd && xd[k] != 0) for (int d = 0; d < n; d++) sv[d] += vk[d] * xd[k];
-    }
+    accumulate(m->V, n, r, x, xd, s, sv);
     for (int d = 0; d < n; d++) {
         m->q[rod->free_q[d]] += s[d];
         if (xd) m->vq[rod->free_q[d]] = sv[d];
@@ -44,19 +77,12 @@ const double *gal_rom_basis_at(gal_rom *m, const double *x)
     return m->qm ? gal_rom_qm_basis(m, x) : m->V;
 }
 
-/* f = B^T (free part of a configuration-sized vector g), B the tangent basis at x */
+/* f = B^T (free part of a configuration-sized vector g), B the tangent basis at x (ecsw_project.c's
+ * four columns a pass, each sum over the entries in order) */
 static void project(gal_rom *m, const double *x, const double *g, double *f)
 {
-    int n = m->ndof;
-    const double *B = gal_rom_basis_at(m, x);
-    for (int k = 0; k < m->r; k++) {
-        const double *vk = B + (size_t)k * n;
-        double s = 0;
-        for (int d = 0; d < n; d++) s += vk[d] * g[m->rod->free_q[d]];
-        f[k] = s;
-    }
+    gal_rom_project_free(m, gal_rom_basis_at(m, x), g, NULL, f, NULL);
 }
-
 
 /* The reduced equations' own acceleration at the state into ac: fe - Cr v - fi (the integrator's
  * a lags it by the step's truncation error). m->da is scratch. */
