@@ -273,7 +273,8 @@ static void test_term_list(void)
  * its two nodes; the same gradient and tangent, bit for bit, as each node evaluated alone with
  * every quantity computed there (gal_rod_node_local over gal_rod_node_geometry), assembled in
  * the same order: on a rod with bending and torsion (clamped and free), torsion alone, and a
- * bundle's twist terms, gradient alone and with the tangent. */
+ * bundle's twist terms, gradient alone and with the tangent; with torsion the edge frames it hands
+ * out (gal_rod_eval_frames, to the loads) are gal_rod_edge_frame's, bit for bit. */
 static void check_pass_bitwise(int torsion, int clamped, double EI, double R2, unsigned long seed)
 {
     gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
@@ -288,13 +289,21 @@ static void check_pass_bitwise(int torsion, int clamped, double EI, double R2, u
     while (k0 < rod->nterm && !rod->term[k0]->node) k0++;
     for (k1 = k0; k1 < rod->nterm && rod->term[k1]->node; k1++) {}
     CHECK(k1 > k0, "a run of node terms");
-    double *g = calloc(nq, sizeof(double)), *gr = calloc(nq, sizeof(double));
+    double *g = calloc(nq, sizeof(double)), *gr = calloc(nq, sizeof(double)), *fr = calloc(6 * rod->p.elements, sizeof(double));
     gal_csc *K = gal_csc_clone(rod->K), *Kr = gal_csc_clone(rod->K);
     for (int withK = 0; withK < 2; withK++) {
         double U = 0, Ur = 0;
         memset(g, 0, nq * sizeof(double)), memset(gr, 0, nq * sizeof(double));
         memset(K->val, 0, nnz * sizeof(double)), memset(Kr->val, 0, nnz * sizeof(double));
-        CHECK(gal_rod_node_pass(rod, rod->term + k0, k1 - k0, q, &U, g, withK ? K : NULL) == GAL_OK, "pass");
+        int framed = 0, fbad = 0;
+        CHECK(gal_rod_node_pass(rod, rod->term + k0, k1 - k0, q, &U, g, withK ? K : NULL, fr, &framed) == GAL_OK, "pass");
+        CHECK(framed == torsion, "edge frames handed out (%d) with the twist's terms (%d)", framed, torsion);
+        for (int j = 0; j < rod->p.elements && framed; j++) { /* each edge's frame, as computed alone */
+            double ta[6];
+            gal_rod_edge_frame(rod, q, j, ta);
+            for (int k = 0; k < 6; k++) fbad += !(fr[6 * j + k] == ta[k]);
+        }
+        CHECK(fbad == 0, "%d edge frame entries differ from gal_rod_edge_frame's", fbad);
         for (int i = 1; i <= rod->nn - 2; i++) {
             double g11[NL] = {0}, H11[NL * NL] = {0};
             int qi[NL];
@@ -312,7 +321,7 @@ static void check_pass_bitwise(int torsion, int clamped, double EI, double R2, u
         CHECK_REL(U, Ur, 1e-13);
     }
     printf("    (torsion %d, clamped %d, EI %g, R^2 %g: %d node terms, bit for bit)\n", torsion, clamped, EI, R2, k1 - k0);
-    free(g), free(gr), free(q), gal_csc_free(K), gal_csc_free(Kr);
+    free(g), free(gr), free(fr), free(q), gal_csc_free(K), gal_csc_free(Kr);
     gal_rod_free(rod);
     gsl_rng_free(r);
 }

@@ -119,8 +119,15 @@ static void assemble(const gal_rod *rod, int i, const double *g, double (*H)[8],
     }
 }
 
+/* Side `side` of nd's edge frame (its tangent, then A) into frames + 6 j, j the edge. */
+static void keep_frame(const gal_rod_node *nd, int i, int side, double *frames)
+{
+    double *f = frames + 6 * (i - 1 + side);
+    memcpy(f, side ? nd->t1 : nd->t0, 3 * sizeof(double)), memcpy(f + 3, side ? nd->A1 : nd->A0, 3 * sizeof(double));
+}
+
 int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, const double *q,
-                      double *U, double *grad, gal_csc *K)
+                      double *U, double *grad, gal_csc *K, double *frames, int *framed)
 {
     hess_plan P[NL * NL];
     if (K) plan_build(P);
@@ -132,6 +139,10 @@ int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, 
         if (i == 1) edge(rod, i, 0, q, nd.tw, &nd);
         else shift(&nd);
         edge(rod, i, 1, q, nd.tw, &nd);
+        if (frames && nd.tw) {
+            if (i == 1) keep_frame(&nd, i, 0, frames);
+            keep_frame(&nd, i, 1, frames);
+        }
         int st = node_of_edges(rod, i, &nd);
         if (st) return st;
         double g[8], H[8][8], E = 0;
@@ -141,6 +152,7 @@ int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, 
         *U += E;
         assemble(rod, i, g, H, P, grad, K);
     }
+    if (frames && nd.tw && rod->nn > 2) *framed = 1;
     return GAL_OK;
 }
 

@@ -57,9 +57,11 @@ void gal_rod_mul33(gal_m33 A, gal_m33 B, gal_m33 C);
 
 /* One pass over the interior nodes for the node terms t[0..nt-1]: per node the geometry (GAL_EFAIL
  * with a message when the rod folds back on itself), the sum of the terms' energies, gradients
- * and Hessians (H when K != NULL), assembled into *U, grad (may be NULL) and K->val (may be NULL). */
+ * and Hessians (H when K != NULL), assembled into *U, grad (may be NULL) and K->val (may be NULL).
+ * With frames != NULL and a twist term among t, each edge's frame (gal_rod_edge_frame's numbers,
+ * computed there for the twist) into frames + 6 j, and *framed = 1. */
 int gal_rod_node_pass(const gal_rod *rod, const gal_rod_term *const *t, int nt, const double *q,
-                      double *U, double *grad, gal_csc *K);
+                      double *U, double *grad, gal_csc *K, double *frames, int *framed);
 
 /* The node terms t[0..nt-1] at interior node i alone: energy added to *U, gradient to g11 and
  * Hessian to H11 (11 x 11 row-major; may be NULL) over the stencil's node variables (the order of
@@ -79,6 +81,8 @@ void gal_rod_ice_mass(gal_rod *rod);
 int gal_rod_frames_init(gal_rod *rod, const double *q0);
 /* Parallel transport of a (normal to tb) from unit tangent tb to unit tangent t. */
 void gal_rod_transport(const double *tb, const double *a, const double *t, double *r);
+/* Edge j's unit tangent ta[0..2] and its reference director carried to it, ta[3..5] (frames.c). */
+void gal_rod_edge_frame(const gal_rod *rod, const double *q, int j, double ta[6]);
 
 /* The list of the terms that are on (rod->term, rod->nterm) from the parameters. */
 void gal_rod_terms_init(gal_rod *rod);
