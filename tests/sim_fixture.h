@@ -46,7 +46,7 @@ static inline gal_rom *rom_fixture(gal_sim_setup *s, gal_rom_opts *ro)
         return NULL;
     }
     ro->damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom *m = gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, ro, &F);
     if (m && gal_rom_start(m, 0, d->q_start, d->v_start)) gal_rom_free(m), m = NULL;
     CHECK(m != NULL, "%s", gal_error_message());

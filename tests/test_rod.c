@@ -4,6 +4,7 @@
 #include "gallop.h"
 #include "gallop/rod/rod.h"
 #include "rod_fd.h"
+#include "rod/rod_impl.h"
 
 #include <gsl/gsl_rng.h>
 
@@ -267,6 +268,98 @@ static void test_term_list(void)
     gal_rod_free(rod);
 }
 
+
+/* The node pass (gal_rod_node_pass) computes each edge's geometry and twist frame data once for
+ * its two nodes; the same gradient and tangent, bit for bit, as each node evaluated alone with
+ * every quantity computed there (gal_rod_node_local over gal_rod_node_geometry), assembled in
+ * the same order: on a rod with bending and torsion (clamped and free), torsion alone, and a
+ * bundle's twist terms, gradient alone and with the tangent; with torsion the edge frames it hands
+ * out (gal_rod_eval_frames, to the loads) are gal_rod_edge_frame's, bit for bit. */
+static void check_pass_bitwise(int torsion, int clamped, double EI, double R2, unsigned long seed)
+{
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(r, seed);
+    double *q;
+    bundle_next = R2;
+    gal_rod *rod = random_rod(15, torsion, clamped, 2e4, EI, &q, r);
+    bundle_next = 0;
+    CHECK(rod != NULL, "alloc: %s", gal_error_message());
+    if (!rod) return;
+    int k0 = 0, k1, nq = rod->nq, nnz = rod->K->nnz, bad = 0;
+    while (k0 < rod->nterm && !rod->term[k0]->node) k0++;
+    for (k1 = k0; k1 < rod->nterm && rod->term[k1]->node; k1++) {}
+    CHECK(k1 > k0, "a run of node terms");
+    double *g = calloc(nq, sizeof(double)), *gr = calloc(nq, sizeof(double)), *fr = calloc(6 * rod->p.elements, sizeof(double));
+    gal_csc *K = gal_csc_clone(rod->K), *Kr = gal_csc_clone(rod->K);
+    for (int withK = 0; withK < 2; withK++) {
+        double U = 0, Ur = 0;
+        memset(g, 0, nq * sizeof(double)), memset(gr, 0, nq * sizeof(double));
+        memset(K->val, 0, nnz * sizeof(double)), memset(Kr->val, 0, nnz * sizeof(double));
+        int framed = 0, fbad = 0;
+        CHECK(gal_rod_node_pass(rod, rod->term + k0, k1 - k0, q, &U, g, withK ? K : NULL, fr, &framed) == GAL_OK, "pass");
+        CHECK(framed == torsion, "edge frames handed out (%d) with the twist's terms (%d)", framed, torsion);
+        for (int j = 0; j < rod->p.elements && framed; j++) { /* each edge's frame, as computed alone */
+            double ta[6];
+            gal_rod_edge_frame(rod, q, j, ta);
+            for (int k = 0; k < 6; k++) fbad += !(fr[6 * j + k] == ta[k]);
+        }
+        CHECK(fbad == 0, "%d edge frame entries differ from gal_rod_edge_frame's", fbad);
+        for (int i = 1; i <= rod->nn - 2; i++) {
+            double g11[NL] = {0}, H11[NL * NL] = {0};
+            int qi[NL];
+            CHECK(gal_rod_node_local(rod, rod->term + k0, k1 - k0, i, q, &Ur, g11, withK ? H11 : NULL) == GAL_OK, "local");
+            gal_rod_node_q(rod, i, qi);
+            for (int a = 0; a < NL; a++)
+                if (qi[a] >= 0) gr[qi[a]] += g11[a];
+            const int *sm = rod->slot_node + (size_t)(i - 1) * NL * NL;
+            for (int ab = 0; withK && ab < NL * NL; ab++)
+                if (sm[ab] >= 0) Kr->val[sm[ab]] += H11[ab];
+        }
+        for (int k = 0; k < nq; k++) bad += !(g[k] == gr[k]);
+        for (int p = 0; p < nnz; p++) bad += !(K->val[p] == Kr->val[p]);
+        CHECK(bad == 0, "%s: %d entries differ from the nodes evaluated alone", withK ? "tangent" : "gradient", bad);
+        CHECK_REL(U, Ur, 1e-13);
+    }
+    printf("    (torsion %d, clamped %d, EI %g, R^2 %g: %d node terms, bit for bit)\n", torsion, clamped, EI, R2, k1 - k0);
+    free(g), free(gr), free(fr), free(q), gal_csc_free(K), gal_csc_free(Kr);
+    gal_rod_free(rod);
+    gsl_rng_free(r);
+}
+
+static void test_node_pass_bitwise(void)
+{
+    check_pass_bitwise(1, 1, 50.0, 0, 11);
+    check_pass_bitwise(1, 0, 50.0, 0, 12);
+    check_pass_bitwise(1, 1, 0.0, 0, 13);
+    check_pass_bitwise(0, 1, 50.0, 0, 14);
+    check_pass_bitwise(1, 1, 50.0, 0.04, 15);
+}
+
+/* The fold-back check of the node stencil: a turn of the rod at node 5 whose cosine is -0.998
+ * between edges of lengths 1 and 2 m is a sharp bend, evaluated; at -0.9995 the rod folds back
+ * on itself there, refused with the node. */
+static void test_fold_back(void)
+{
+    gal_rod_params p = {.length = 10, .elements = 10, .unstretched_length = 10, .EA = 1e6, .EI = 50,
+                        .mass = 1, .polar_inertia = 1e-4, .GJ = 1};
+    double q0[33] = {0}, q[33];
+    for (int i = 0; i <= 10; i++) q0[3 * i] = i;
+    gal_rod *rod = gal_rod_alloc(&p, q0);
+    CHECK(rod != NULL, "alloc: %s", gal_error_message());
+    if (!rod) return;
+    for (int pass = 0; pass < 2; pass++) {
+        double c = pass ? -0.9995 : -0.998, s = sqrt(1 - c * c), U;
+        memcpy(q, q0, sizeof q);
+        for (int i = 6; i <= 10; i++) q[3 * i] = 5 + 2 * (i - 5) * c, q[3 * i + 1] = 2 * (i - 5) * s;
+        int st = gal_rod_eval(rod, q, &U, NULL, NULL);
+        if (!pass) CHECK(st == GAL_OK, "a sharp bend (cos %g) evaluated: %s", c, gal_error_message());
+        else
+            CHECK(st == GAL_EFAIL && strstr(gal_error_message(), "node 5"), "folded back at node 5 (cos %g): %d, %s", c,
+                  st, gal_error_message());
+    }
+    gal_rod_free(rod);
+}
+
 int main(void)
 {
     RUN(test_derivatives_bending_torsion);
@@ -280,5 +373,7 @@ int main(void)
     RUN(test_derivatives_per_term);
     RUN(test_term_list);
     RUN(test_bundle_terms);
+    RUN(test_node_pass_bitwise);
+    RUN(test_fold_back);
     return CHECK_SUMMARY();
 }

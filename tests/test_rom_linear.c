@@ -37,7 +37,7 @@ static void test_bad_force_refused(void)
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
     ro.h = 0.01, ro.rho_inf = 0.9, ro.damping = d->damping, ro.one_pass = 8; /* opt-in */
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom *m = st ? NULL : gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
     if (m && !(st = gal_rom_start(m, 0, d->q_start, d->v_start)) && !(st = gal_rom_advance(m, 5.0))) {
         while (!st && !(m->lin_ok && m->hJ == m->o.h && m->steps % m->o.one_pass)) st = gal_rom_step(m);

@@ -55,7 +55,7 @@ static void test_third(void)
     gal_rom_opts o;
     gal_rom_default_opts(&o);
     o.h = DT_OUT / ceil(DT_OUT * 40 * fhi - 1e-9), o.damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom_adapt a;
     gal_rom *m = NULL, *ref = NULL;
     gal_rom_check chk;

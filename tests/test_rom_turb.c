@@ -59,7 +59,7 @@ static void test_vectors(void)
     const gal_rod *rod = d->eq.rod;
     gal_rom *m = gal_rom_setup_alloc(rod, d->eq.q, &d->md, d->sel, d->basis, NULL);
     CHECK(m != NULL, "%s", gal_error_message());
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom_turb_opts o;
     gal_rom_turb_default_opts(&o);
     o.t1 = 60;
@@ -154,7 +154,7 @@ static void test_refit_failing_sample(void)
     gal_sim_setup s;
     if (setup_60(&sc, &s)) return;
     gal_data *d = s.data;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom *m = gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, NULL, &F);
     CHECK(m && m->hyper && m->hyper->loads, "%s", m ? "no loads' sample" : gal_error_message());
     if (!m || !m->hyper || !m->hyper->loads) { gal_rom_free(m); gal_sim_setup_clear(&s); return; }

@@ -80,9 +80,10 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
     return point(L, &ls, t, x, rdot, 0.0, tan, d1, f, m);
 }
 
-/* The load of element j at its centre: force fe (N/m) and moment *me (N m/m). */
+/* The load of element j at its centre: force fe (N/m) and moment *me (N m/m); ta: the edge's frame
+ * (gal_rod_eval_frames') or NULL (computed here). */
 static int element_load(const gal_loads *L, const gal_loads_list *ls, double t, const double *q, const double *v,
-                        int j, double fe[3], double *me)
+                        int j, const double *ta, double fe[3], double *me)
 {
     double r[3], rd[3], tg[3], d1[3];
     fe[0] = fe[1] = fe[2] = 0, *me = 0;
@@ -90,23 +91,24 @@ static int element_load(const gal_loads *L, const gal_loads_list *ls, double t, 
         r[k] = 0.5 * (q[3 * j + k] + q[3 * (j + 1) + k]);
         rd[k] = 0.5 * (v[3 * j + k] + v[3 * (j + 1) + k]);
     }
-    gal_rod_material_frame(L->rod, q, j, tg, d1);
+    if (ta) gal_rod_material_frame_from(L->rod, q, j, ta, tg, d1);
+    else gal_rod_material_frame(L->rod, q, j, tg, d1);
     double spin = L->rod->p.torsion ? v[3 * L->rod->nn + j] : 0.0; /* the twist rate */
     int st = point(L, ls, t, r[0], rd, spin, tg, d1, fe, me);
     if (st) return gal_error(GAL_EFAIL, "aerodynamic load of element %d at t = %.6g s: %s", j, t, gal_error_message());
     return GAL_OK;
 }
 
-int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f)
+/* gal_loads_full, with the edge frames given when frames != NULL */
+static int full(const gal_loads *L, double t, const double *q, const double *v, const double *frames, double *f)
 {
-    const gal_loads *L = ctx;
     gal_loads_list ls;
     gal_loads_list_make(L, &ls); /* once for all elements */
     const gal_rod *rod = L->rod;
     int nel = rod->p.elements, nn = rod->nn;
     for (int j = 0; j < nel; j++) {
         double fe[3], me;
-        int st = element_load(L, &ls, t, q, v, j, fe, &me);
+        int st = element_load(L, &ls, t, q, v, j, frames ? frames + 6 * j : NULL, fe, &me);
         if (st) return st;
         double l0 = rod->l0[j];
         for (int k = 0; k < 3; k++) {
@@ -118,13 +120,23 @@ int gal_loads_full(void *ctx, double t, const double *q, const double *v, double
     return GAL_OK;
 }
 
+int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f)
+{
+    return full(ctx, t, q, v, NULL, f);
+}
+
+int gal_loads_full_framed(void *ctx, double t, const double *q, const double *v, const double *frames, double *f)
+{
+    return full(ctx, t, q, v, frames, f);
+}
+
 int gal_loads_element(void *ctx, double t, const double *q, const double *v, int j, double f[7])
 {
     const gal_loads *L = ctx;
     gal_loads_list ls;
     gal_loads_list_make(L, &ls);
     double fe[3], me, l0 = L->rod->l0[j];
-    int st = element_load(L, &ls, t, q, v, j, fe, &me);
+    int st = element_load(L, &ls, t, q, v, j, NULL, fe, &me);
     if (st) return st;
     for (int k = 0; k < 3; k++) f[k] = f[3 + k] = 0.5 * l0 * fe[k];
     f[6] = L->rod->p.torsion ? l0 * me : 0;

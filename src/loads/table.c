@@ -34,6 +34,7 @@ gal_aero_table *gal_aero_table_free(gal_aero_table *t)
         if (t->spline[i]) gsl_interp_free(t->spline[i]);
         free(t->c[i]);
     }
+    free(t->poly);
     free(t->alpha);
     free(t->path);
     free(t->source);
@@ -101,6 +102,70 @@ static int check_period(const char *name, int rows, const double *adeg, const do
     return GAL_OK;
 }
 
+/* Interval i of the spline: i such that alpha[i] <= x < alpha[i + 1] (n - 2 at the last node), as
+ * GSL's bisection finds it (gsl_interp_bsearch over the whole table). */
+static int interval(const gal_aero_table *t, double x)
+{
+    int lo = 0, hi = t->n - 1;
+    while (hi > lo + 1) {
+        int i = (hi + lo) / 2;
+        if (t->alpha[i] > x) hi = i;
+        else lo = i;
+    }
+    return lo;
+}
+
+/* The cubic of coefficient k at x in interval i: value and slope, in GSL's cspline evaluation's
+ * operations (y_lo + delx (b + delx (c + delx d)), b + delx (2 c + 3 d delx)). */
+static void cubic(const gal_aero_table *t, int i, int k, double x, double *y, double *dy)
+{
+    const double *p = t->poly + 4 * (3 * i + k);
+    double delx = x - t->alpha[i];
+    *y = p[0] + delx * (p[1] + delx * (p[2] + delx * p[3]));
+    if (dy) *dy = p[1] + delx * (2.0 * p[2] + 3.0 * p[3] * delx);
+}
+
+/* t->poly: each interval's cubic, formed once as GSL's periodic cubic spline forms it at every
+ * evaluation (b = dy/dx - dx (c_{i+1} + 2 c_i)/3, c = c_i, d = (c_{i+1} - c_i)/(3 dx), c_i half the
+ * second derivative at node i, c_{n-1} = c_0 by periodicity): the same numbers without the
+ * three divisions and the call per coefficient. Kept only when it gives GSL's values and slopes
+ * bit for bit at every node and at 7 points inside every interval; else left NULL (GSL evaluates).
+ * Out of memory: left NULL as well. */
+static void poly_build(gal_aero_table *t)
+{
+    int n = t->n;
+    double *cc = malloc((size_t)n * sizeof(double));
+    if (!cc || !(t->poly = malloc((size_t)12 * (n - 1) * sizeof(double)))) {
+        free(cc);
+        return;
+    }
+    int ok = 1;
+    for (int k = 0; k < 3 && ok; k++) {
+        for (int i = 0; i + 1 < n; i++) cc[i] = 0.5 * gsl_interp_eval_deriv2(t->spline[k], t->alpha, t->c[k], t->alpha[i], NULL);
+        cc[n - 1] = cc[0];
+        for (int i = 0; i + 1 < n; i++) {
+            double dx = t->alpha[i + 1] - t->alpha[i], dy = t->c[k][i + 1] - t->c[k][i], *p = t->poly + 4 * (3 * i + k);
+            p[0] = t->c[k][i];
+            p[1] = (dy / dx) - dx * (cc[i + 1] + 2.0 * cc[i]) / 3.0;
+            p[2] = cc[i];
+            p[3] = (cc[i + 1] - cc[i]) / (3.0 * dx);
+        }
+    }
+    for (int i = 0; i + 1 < n && ok; i++)
+        for (int s = 0; s <= 8 && ok; s++) { /* the node, 7 points inside, the next node */
+            double x = s == 8 ? t->alpha[i + 1] : t->alpha[i] + s * (t->alpha[i + 1] - t->alpha[i]) / 8;
+            int j = interval(t, x);
+            for (int k = 0; k < 3 && ok; k++) {
+                double y, dy;
+                cubic(t, j, k, x, &y, &dy);
+                ok = y == gsl_interp_eval(t->spline[k], t->alpha, t->c[k], x, NULL) &&
+                     dy == gsl_interp_eval_deriv(t->spline[k], t->alpha, t->c[k], x, NULL);
+            }
+        }
+    free(cc);
+    if (!ok) free(t->poly), t->poly = NULL;
+}
+
 /* The table over nd distinct angles plus the closure alpha[0] + 2 pi, with its periodic splines. */
 static gal_aero_table *splines(const char *name, const char *source, int nd, const double *adeg,
                                const double *const cv[3], int *status)
@@ -130,6 +195,7 @@ static gal_aero_table *splines(const char *name, const char *source, int nd, con
             return gal_aero_table_free(t);
         }
     }
+    poly_build(t);
     *status = GAL_OK;
     return t;
 nomem:
@@ -235,7 +301,12 @@ void gal_aero_eval(const gal_aero_table *t, double alpha, double c[3], double dc
     if (x > a1) x = a1;             /* the spline's domain, exactly */
     /* the three splines share their nodes: one interval search (a local accelerator: the table
      * stays const and thread-safe), found as the NULL accelerator's bisection finds it, so the
-     * values are the same numbers */
+     * values are the same numbers; each interval's cubic formed once (poly_build) */
+    if (t->poly) {
+        int j = interval(t, x);
+        for (int i = 0; i < 3; i++) cubic(t, j, i, x, c + i, dc ? dc + i : NULL);
+        return;
+    }
     gsl_interp_accel acc = {0, 0, 0};
     for (int i = 0; i < 3; i++) {
         c[i] = gsl_interp_eval(t->spline[i], t->alpha, t->c[i], x, &acc);

@@ -194,12 +194,15 @@ typedef struct train_set {
  * of the samples not fitted on every element: the force of every element at once (assembled: one
  * evaluation of the rod, one of the loads). With G (the model's constant basis) its free part is
  * gathered into G[set] + (s % TARGET_CHUNK) n, projected a chunk of states at a time (columns:
- * gal_rom_project_states); else projected here, both in one pass. The rod's are corrected after. */
+ * gal_rom_project_states); else projected here, both in one pass. The rod's are corrected after.
+ * With frames (6 a rod edge; both samples' targets and the loads' force.eval_framed) the rod's
+ * evaluation hands its edge frames to the loads': the same numbers, not computed twice. */
 #define TARGET_CHUNK 4 /* the states whose targets are projected together: V read once for them, a
                         * small buffer (a whole-mesh buffer for every state, 0.8 MB at 1000
                         * elements, made glibc give the heap's top back and fault it in again at
                         * every build: more than the pass saved) */
-static int targets(gal_rom *m, train_set *T, int nt, int s, double t, const double *B, double *const *G)
+static int targets(gal_rom *m, train_set *T, int nt, int s, double t, const double *B, double *const *G,
+                   double *frames)
 {
     const int *fq = m->rod->free_q;
     int r = m->r, n = m->ndof, st = GAL_OK;
@@ -208,10 +211,12 @@ static int targets(gal_rom *m, train_set *T, int nt, int s, double t, const doub
         if (T[i].all) continue;
         b[T[i].set] = T[i].b + (size_t)s * r;
         double *f = T[i].set == 0 ? m->gq : m->fq;
-        if (T[i].set == 0) st = gal_rod_eval(m->rod, m->q, NULL, m->gq, NULL);
+        if (T[i].set == 0) st = frames ? gal_rod_eval_frames(m->rod, m->q, NULL, m->gq, NULL, frames)
+                                       : gal_rod_eval(m->rod, m->q, NULL, m->gq, NULL);
         else {
             memset(m->fq, 0, (size_t)m->nq * sizeof(double));
-            st = m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
+            st = frames ? m->force.eval_framed(m->force.ctx, t, m->q, m->vq, frames, m->fq)
+                        : m->force.eval(m->force.ctx, t, m->q, m->vq, m->fq);
         }
         m->hyper->train_full_evals++;
         if (G && !st)
@@ -259,8 +264,12 @@ static int columns(gal_rom *m, train_set *T, int nt, const double *Vt)
             if (!(Kl = malloc((size_t)r * r * sizeof(double)))) return gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
             st = linear_part(m, Kl);
         }
-    int loads = 0, n = m->ndof; /* the velocity is the loads' alone */
-    for (int i = 0; i < nt; i++) loads |= T[i].set == 1;
+    int loads = 0, whole[2] = {0, 0}, n = m->ndof; /* the velocity is the loads' alone */
+    for (int i = 0; i < nt; i++) loads |= T[i].set == 1, whole[T[i].set] |= !T[i].all;
+    double *frames = NULL; /* both targets whole, the rod's evaluated first (T in set order) */
+    if (!st && whole[0] && whole[1] && T[0].set == 0 && m->force.eval_framed &&
+        !(frames = malloc((size_t)6 * rod->p.elements * sizeof(double))))
+        st = gal_error(GAL_ENOMEM, "reduced model: out of memory for the sampling");
     double *G[2] = {NULL, NULL}; /* the targets' free parts, state by state, with the constant basis */
     for (int i = 0; i < nt && !st && !m->qm; i++)
         if (!T[i].all && !(G[T[i].set] = malloc((size_t)TARGET_CHUNK * n * sizeof(double))))
@@ -278,7 +287,7 @@ static int columns(gal_rom *m, train_set *T, int nt, const double *Vt)
                 project_local(m, B, Vt, qi, g, T[i].set == 0 ? NQ : 7, T[i].A + (size_t)c * rows + (size_t)s * r);
                 h->train_element_evals++;
             }
-        if (!st) st = targets(m, T, nt, s, t, B, m->qm ? NULL : G);
+        if (!st) st = targets(m, T, nt, s, t, B, m->qm ? NULL : G, frames);
         int s0 = s - s % TARGET_CHUNK; /* a full chunk, or the last states: projected */
         for (int i = 0; i < nt && !st && !m->qm && (s - s0 == TARGET_CHUNK - 1 || s == h->ns - 1); i++)
             if (!T[i].all) gal_rom_project_states(m, G[T[i].set], s - s0 + 1, T[i].b + (size_t)s0 * r);
@@ -288,7 +297,7 @@ static int columns(gal_rom *m, train_set *T, int nt, const double *Vt)
         if (T[i].set == 0)
             for (int s = 0; s < h->ns; s++) correct(m, h->snap + (size_t)s * (2 * r + 1), Kl, T[i].b + (size_t)s * r);
     }
-    free(Kl), free(G[0]), free(G[1]);
+    free(Kl), free(G[0]), free(G[1]), free(frames);
     return st;
 }
 

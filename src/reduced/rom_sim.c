@@ -126,7 +126,8 @@ int gal_rom_sim_run(gal_sim_setup *s, const gal_rom_sim_opts *o, gal_sim_result 
     ro.damping = d->damping; /* the structural damping of the pipeline */
     ro.extra = o->extra, ro.nextra = o->nextra;
     gal_force F = {0};
-    if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */
+    if (d->loads.table) /* read only */
+        F.eval = gal_loads_full, F.element = gal_loads_element, F.eval_framed = gal_loads_full_framed, F.ctx = (void *)&d->loads;
     double *fm = ro.manifold && d->loads.table ? calloc((size_t)rod->nq, sizeof(double)) : NULL; /* qm.h */
     if (fm && !gal_loads_mean(&d->loads, d->eq.q, fm)) ro.mean_load = fm, ro.static_vectors = 1;
     gal_rom_adapt a;

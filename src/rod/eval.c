@@ -24,9 +24,9 @@ void gal_rod_terms_init(gal_rod *rod)
     rod->nterm = n;
 }
 
-/* Clear the outputs, add the terms k0 <= k < k1. */
+/* Clear the outputs, add the terms k0 <= k < k1 (frames, *framed: gal_rod_node_pass). */
 static int sum(const gal_rod *rod, int k0, int k1, const double *q, double *energy, double *grad,
-               gal_csc *K)
+               gal_csc *K, double *frames, int *framed)
 {
     double U = 0.0;
     if (grad) memset(grad, 0, (size_t)rod->nq * sizeof(double));
@@ -35,7 +35,7 @@ static int sum(const gal_rod *rod, int k0, int k1, const double *q, double *ener
         int st, k2 = k;
         if (rod->term[k]->node) { /* a run of node terms: one pass */
             while (k2 < k1 && rod->term[k2]->node) k2++;
-            st = gal_rod_node_pass(rod, rod->term + k, k2 - k, q, &U, grad, K);
+            st = gal_rod_node_pass(rod, rod->term + k, k2 - k, q, &U, grad, K, frames, framed);
         } else {
             st = rod->term[k]->eval(rod, q, &U, grad, K);
             k2 = k + 1;
@@ -50,7 +50,15 @@ static int sum(const gal_rod *rod, int k0, int k1, const double *q, double *ener
 
 int gal_rod_eval(const gal_rod *rod, const double *q, double *energy, double *grad, gal_csc *K)
 {
-    return sum(rod, 0, rod->nterm, q, energy, grad, K);
+    return sum(rod, 0, rod->nterm, q, energy, grad, K, NULL, NULL);
+}
+
+int gal_rod_eval_frames(const gal_rod *rod, const double *q, double *energy, double *grad, gal_csc *K,
+                        double *frames)
+{
+    int framed = 0, st = sum(rod, 0, rod->nterm, q, energy, grad, K, frames, &framed);
+    for (int j = 0; j < rod->p.elements && !st && !framed; j++) gal_rod_edge_frame(rod, q, j, frames + 6 * j);
+    return st;
 }
 
 int gal_rod_eval_term(const gal_rod *rod, int k, const double *q, double *energy, double *grad,
@@ -58,5 +66,5 @@ int gal_rod_eval_term(const gal_rod *rod, int k, const double *q, double *energy
 {
     if (k < 0 || k >= rod->nterm)
         return gal_error(GAL_EINPUT, "rod: term %d of %d", k, rod->nterm);
-    return sum(rod, k, k + 1, q, energy, grad, K);
+    return sum(rod, k, k + 1, q, energy, grad, K, NULL, NULL);
 }

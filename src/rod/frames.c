@@ -15,16 +15,31 @@ void gal_rod_transport(const double *tb, const double *a, const double *t, doubl
     for (int k = 0; k < 3; k++) r[k] = a[k] - f * (tb[k] + t[k]);
 }
 
-void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3])
+/* Edge j's unit tangent ta[0..2] and its reference director carried to it, ta[3..5]. */
+void gal_rod_edge_frame(const gal_rod *rod, const double *q, int j, double ta[6])
 {
-    double e[3], a[3];
+    double e[3];
     for (int k = 0; k < 3; k++) e[k] = q[3 * (j + 1) + k] - q[3 * j + k];
     double le = gal_norm3(e);
-    for (int k = 0; k < 3; k++) t[k] = e[k] / le;
-    gal_rod_transport(rod->tbar + 3 * j, rod->abar + 3 * j, t, a);
+    for (int k = 0; k < 3; k++) ta[k] = e[k] / le;
+    gal_rod_transport(rod->tbar + 3 * j, rod->abar + 3 * j, ta, ta + 3);
+}
+
+void gal_rod_material_frame_from(const gal_rod *rod, const double *q, int j, const double ta[6], double t[3],
+                                 double d1[3])
+{
+    const double *a = ta + 3;
+    for (int k = 0; k < 3; k++) t[k] = ta[k];
     double th = rod->p.torsion ? q[3 * rod->nn + j] : 0.0, b[3];
     gal_cross3(t, a, b);
     for (int k = 0; k < 3; k++) d1[k] = cos(th) * a[k] + sin(th) * b[k];
+}
+
+void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3])
+{
+    double ta[6];
+    gal_rod_edge_frame(rod, q, j, ta);
+    gal_rod_material_frame_from(rod, q, j, ta, t, d1);
 }
 
 void gal_rod_node_directions(const gal_rod *rod, const double *q, int i, double t[3], double ey[3], double nv[3])

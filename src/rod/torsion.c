@@ -18,8 +18,7 @@ static void skew(const double *a, gal_m33 S)
     S[2][0] = -a[1], S[2][1] = a[0], S[2][2] = 0;
 }
 
-/* C = A B */
-static void mul33(gal_m33 A, gal_m33 B, gal_m33 C)
+void gal_rod_mul33(gal_m33 A, gal_m33 B, gal_m33 C)
 {
     gal_m33 T;
     for (int i = 0; i < 3; i++)
@@ -29,7 +28,7 @@ static void mul33(gal_m33 A, gal_m33 B, gal_m33 C)
 
 /* Half-angle rotation vector between unit vectors: g(u, v) = u x v / (1 + u . v), and its
  * derivatives dg/du = -s [v]_x - s^2 (u x v) v^T, dg/dv = s [u]_x - s^2 (u x v) u^T, s = 1/(1+u.v). */
-static void halfrot(const double *u, const double *v, double *g, gal_m33 Du, gal_m33 Dv)
+void gal_rod_halfrot(const double *u, const double *v, double *g, gal_m33 Du, gal_m33 Dv)
 {
     double s = 1.0 / (1.0 + gal_dot3(u, v)), w[3];
     gal_cross3(u, v, w);
@@ -51,9 +50,13 @@ void gal_rod_twist_strain(const gal_rod *rod, int i, const double *q, const gal_
 {
     const double *t0 = nd->t0, *t1 = nd->t1;
     const double *tb0 = rod->tbar + 3 * (i - 1), *tb1 = rod->tbar + 3 * i;
-    double A0[3], A1[3], u[3], w[3];
-    gal_rod_transport(tb0, rod->abar + 3 * (i - 1), t0, A0); /* reference director of edge i-1 */
-    gal_rod_transport(tb1, rod->abar + 3 * i, t1, A1);        /* and of edge i */
+    double Aw[2][3], u[3], w[3];
+    const double *A0 = nd->A0, *A1 = nd->A1; /* the pass's, per edge (tw > 0) */
+    if (!nd->tw) {
+        gal_rod_transport(tb0, rod->abar + 3 * (i - 1), t0, Aw[0]); /* reference director of edge i-1 */
+        gal_rod_transport(tb1, rod->abar + 3 * i, t1, Aw[1]);        /* and of edge i */
+        A0 = Aw[0], A1 = Aw[1];
+    }
     gal_rod_transport(t0, A0, t1, u);                         /* edge i-1's carried across node i */
     gal_cross3(u, A1, w);
     double mref = atan2(gal_dot3(w, t1), gal_dot3(u, A1));    /* signed angle u -> A1 about t1 */
@@ -62,9 +65,13 @@ void gal_rod_twist_strain(const gal_rod *rod, int i, const double *q, const gal_
     /* d mref/de0 = [g(t0,t1) + g(tb0,t0)]/n0, d mref/de1 = [g(t0,t1) - g(tb1,t1)]/n1: the
      * curvature binormal's share (Bergou et al. 2010) plus the turn of each reference frame
      * about its own tangent as it is carried from the reference tangent */
-    halfrot(t0, t1, s->gA, hess ? s->DAu : NULL, hess ? s->DAv : NULL);
-    halfrot(tb0, t0, s->gB0, NULL, hess ? s->DB0 : NULL);
-    halfrot(tb1, t1, s->gB1, NULL, hess ? s->DB1 : NULL);
+    gal_rod_halfrot(t0, t1, s->gA, hess ? s->DAu : NULL, hess ? s->DAv : NULL);
+    if (nd->tw == 2 || (nd->tw && !hess)) /* the pass's, per edge (the Hessian reads Y0, Y1) */
+        memcpy(s->gB0, nd->gB0, sizeof s->gB0), memcpy(s->gB1, nd->gB1, sizeof s->gB1);
+    else {
+        gal_rod_halfrot(tb0, t0, s->gB0, NULL, hess ? s->DB0 : NULL);
+        gal_rod_halfrot(tb1, t1, s->gB1, NULL, hess ? s->DB1 : NULL);
+    }
     for (int d = 0; d < 3; d++)
         s->gm[d] = (s->gA[d] + s->gB0[d]) / nd->n0, s->gm[3 + d] = (s->gA[d] - s->gB1[d]) / nd->n1;
     s->gm[6] = -1, s->gm[7] = 1;
@@ -74,13 +81,17 @@ void gal_rod_twist_hessian(const gal_rod_node *nd, gal_rod_twist *s, double kt,
                            double (*H)[8])
 {
     const double n0 = nd->n0, n1 = nd->n1, *t0 = nd->t0, *t1 = nd->t1;
-    gal_m33 X0, X1, Y0, Y1;
+    gal_m33 X0, X1, Yw[2];
     gal_m33 P0, P1;
     memcpy(P0, nd->P0, sizeof P0), memcpy(P1, nd->P1, sizeof P1);
-    mul33(s->DAu, P0, X0); /* dA/de0 * n0 */
-    mul33(s->DAv, P1, X1); /* dA/de1 * n1 */
-    mul33(s->DB0, P0, Y0); /* dB0/de0 * n0 */
-    mul33(s->DB1, P1, Y1); /* dB1/de1 * n1 */
+    gal_rod_mul33(s->DAu, P0, X0); /* dA/de0 * n0 */
+    gal_rod_mul33(s->DAv, P1, X1); /* dA/de1 * n1 */
+    const double(*Y0)[3] = nd->Y0, (*Y1)[3] = nd->Y1; /* the pass's, per edge (tw == 2) */
+    if (nd->tw != 2) {
+        gal_rod_mul33(s->DB0, P0, Yw[0]); /* dB0/de0 * n0 */
+        gal_rod_mul33(s->DB1, P1, Yw[1]); /* dB1/de1 * n1 */
+        Y0 = Yw[0], Y1 = Yw[1];
+    }
     double Hm[6][6];
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {

@@ -100,7 +100,8 @@ static int rom_alloc(const gal_model *m, const gal_data *d, const gal_run_opts *
     ro.k0 = d->eq.k0;        /* the statics' K0 and its factorization */
     ro.hyper_check_interval = 0; /* the sample's check comes with the self-check (rom_advance) */
     gal_force F = {0};
-    if (d->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&d->loads; /* read only */
+    if (d->loads.table) /* read only */
+        F.eval = gal_loads_full, F.element = gal_loads_element, F.eval_framed = gal_loads_full_framed, F.ctx = (void *)&d->loads;
     s->m = m;
     s->tol = m->sc.model.residual_tolerance;
     s->warn = m->sc.model.on_invalid_warn;

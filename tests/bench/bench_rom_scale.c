@@ -77,7 +77,8 @@ static int one(const char *path, const char *const *ov, int nov, int nel, double
     ro.k0 = dt->eq.k0; /* as the command line: the statics' K0 and its factorization */
     if (manifold >= 0) ro.manifold = manifold;
     gal_force F = {0};
-    if (dt->loads.table) F.eval = gal_loads_full, F.element = gal_loads_element, F.ctx = (void *)&dt->loads;
+    if (dt->loads.table)
+        F.eval = gal_loads_full, F.element = gal_loads_element, F.eval_framed = gal_loads_full_framed, F.ctx = (void *)&dt->loads;
     double ts[7], tr[3];
     int st = 0;
     for (int rep = 3; rep < 7 && !st; rep++) { /* set-up alone, four more times */

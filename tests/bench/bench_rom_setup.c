@@ -67,7 +67,9 @@ static int init(mesh *M, const char *path, int nel)
     M->ro.k0 = dt->eq.k0; /* as the command line: the statics' K0 and its factorization */
     if (fine > 0) M->ro.hyper_snapshots_fine = fine;
     memset(&M->F, 0, sizeof M->F);
-    if (dt->loads.table) M->F.eval = gal_loads_full, M->F.element = gal_loads_element, M->F.ctx = (void *)&dt->loads;
+    if (dt->loads.table)
+        M->F.eval = gal_loads_full, M->F.element = gal_loads_element, M->F.eval_framed = gal_loads_full_framed,
+        M->F.ctx = (void *)&dt->loads;
     return 0;
 }
 

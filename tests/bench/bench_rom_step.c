@@ -69,7 +69,7 @@ static int run_size(void *arg, double *o)
     gal_rom_default_opts(&ro);
     double dt_out = fmin(0.05, 1.0 / (10 * fhi)), h = fmin(dt_out, 1.0 / (40 * fhi)); /* as gal_run */
     ro.h = dt_out / ceil(dt_out / h - 1e-9), ro.rho_inf = sc.simulation.rho_inf, ro.damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom *m = gal_rom_alloc(d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
     if (!m || gal_rom_start(m, 0, d->q_start, d->v_start)) {
         fprintf(stderr, "bench_rom_step: %s\n", gal_error_message());

@@ -20,7 +20,7 @@ static int steps_ms(const gal_data *d, int steps, double *ms, double *its, doubl
     gal_dyn_opts o;
     gal_dyn_default_opts(&o);
     o.h = 0.005, o.damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_dyn *dy = gal_dyn_alloc(d->eq.rod, d->q_start, NULL, &o, &F);
     if (!dy) return 1;
     double t0 = bench_cpu();

@@ -233,7 +233,7 @@ static void plain(gal_data *d, double h, const double *X, int nx, int hyper, dou
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
     ro.hyper = hyper, ro.h = h, ro.damping = d->damping, ro.extra = X, ro.nextra = nx;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom *m = gal_rom_alloc(rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F);
     if (!m || gal_rom_start(m, 0, d->q_start, d->v_start)) { printf("PLAIN %s: %s\n", label, gal_error_message()); return; }
     double *q = malloc((size_t)2 * nq * sizeof(double)), *v = q + nq, T0 = tension_q(rod, d->eq.q, 0);
@@ -331,7 +331,7 @@ int main(int argc, char **argv)
     gal_dyn_opts dop;
     gal_dyn_default_opts(&dop);
     dop.h = sc.simulation.time_step > 0 ? sc.simulation.time_step : 0.005, dop.damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_dyn *dy = gal_dyn_alloc(rod, d->q_start, d->v_start, &dop, &F);
     double *U = malloc((size_t)n * NS_MAX * sizeof(double)), tU[NS_MAX];
     int ns = 0;

@@ -56,7 +56,7 @@ int main(int argc, char **argv)
         gal_rom_opts ro;
         gal_rom_default_opts(&ro);
         ro.weight_vector = ro.wind_vector = k, ro.mean_load = fm, ro.damping = d->damping;
-        gal_force Fo = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+        gal_force Fo = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
         if (!(m[k] = gal_rom_alloc(rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &Fo))) st = 1;
     }
     for (int j = 0; j < 2 && !st; j++) st = gal_chol_solve(m[0]->chol0, F + (size_t)j * n, X + (size_t)j * n);

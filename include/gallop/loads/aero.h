@@ -59,6 +59,8 @@ typedef struct gal_aero_table {
     double *alpha;     /* rad, n nodes, strictly increasing, alpha[n-1] = alpha[0] + 2 pi */
     double *c[3];      /* C_D, C_L, C_M at the nodes (c[i][n-1] = c[i][0]) */
     void *spline[3];   /* gsl_interp (cspline_periodic) for each coefficient */
+    double *poly;      /* per interval i and coefficient k, poly + 4 (3 i + k): the spline's cubic
+                        * y_lo, b, c, d as GSL forms them at each evaluation (NULL: GSL evaluates) */
 } gal_aero_table;
 
 /* Read a table. NULL on error with gal_error(GAL_EINPUT or GAL_EIO, ...) naming the file, line,

@@ -105,6 +105,9 @@ int gal_loads_point(void *ctx, double t, double x, const double r[3], const doub
  * (L->bundle.n > 1) are its sub-conductors' summed about the centroid, each moving with the
  * element's twist rate v[3 nn + j] (gal_loads_point has no twist rate: it takes it as 0). */
 int gal_loads_full(void *ctx, double t, const double *q, const double *v, double *f);
+/* gal_loads_full with the rod's edge frames at q given (gal_force.eval_framed; frames from
+ * gal_rod_eval_frames at the same q): the same numbers, without computing them again. */
+int gal_loads_full_framed(void *ctx, double t, const double *q, const double *v, const double *frames, double *f);
 
 /* The share of element j alone (gal_force.element signature): f[0..2] and f[3..5] on its two
  * nodes, f[6] on its twist; gal_loads_full adds these over the elements. */

@@ -18,6 +18,10 @@ typedef struct gal_force {
     /* optional: the share of element j alone, f[0..6] on x_j, x_{j+1}, theta_j (set, not added);
      * eval's result is the sum of these over the elements (hyper-reduction samples them) */
     int (*element)(void *ctx, double t, const double *q, const double *v, int j, double f[7]);
+    /* optional: eval given the rod's edge frames at q (frames + 6 j: edge j's unit tangent and
+     * carried reference director, gal_rod_eval_frames'), the same numbers as eval: a caller that
+     * evaluates the rod at the same q hands them over instead of having them computed again */
+    int (*eval_framed)(void *ctx, double t, const double *q, const double *v, const double *frames, double *f);
 } gal_force;
 
 /* A distributed load per unit length at a point of the span (N/m and N m/m): position r, velocity

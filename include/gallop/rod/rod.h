@@ -186,6 +186,15 @@ void gal_rod_tensions(const gal_rod *rod, const double *q, double *tension);
 /* Unit tangent t and first material director d1 of edge j (the section's reference direction:
  * the reference director carried to t by the minimal rotation, turned by the edge's twist). */
 void gal_rod_material_frame(const gal_rod *rod, const double *q, int j, double t[3], double d1[3]);
+/* The same from edge j's frame ta (its unit tangent, then the reference director carried to it:
+ * gal_rod_eval_frames' frames + 6 j): the same numbers. */
+void gal_rod_material_frame_from(const gal_rod *rod, const double *q, int j, const double ta[6], double t[3],
+                                 double d1[3]);
+/* gal_rod_eval, and each edge j's unit tangent and reference director carried to it into
+ * frames + 6 j (6 elements; what gal_rod_material_frame computes before the twist): with torsion
+ * the twist's terms compute them in the same pass, else they are computed after it. */
+int gal_rod_eval_frames(const gal_rod *rod, const double *q, double *energy, double *grad, gal_csc *K,
+                        double *frames);
 
 /* The directions of the motion families at node i of configuration q (the equilibrium, for the
  * reduced model's self-check): the unit tangent t of the chord of its neighbours (its own node at an
