@@ -344,8 +344,48 @@ static int third_derivatives(const gal_rom *m, int nm, double *X)
     return st;
 }
 
+/* The rod's torsional modes that the cubic growth adds (rom_adapt.h, GAL_ROM_THIRD_TORSION): those
+ * above the damping's band (as band_check reads it) up to GAL_ROM_THIRD_TORSION times the highest
+ * selected torsional mode's frequency (of the first nm selected), within GAL_ROM_THIRD_TORSION_SLACK,
+ * not selected, lowest first, at most room of them, into X (ndof each); their count into *nadd. */
+static int third_torsion(gal_rom_adapt *a, int nm, double *X, int room, int *nadd)
+{
+    const gal_damping *d = a->o.damping;
+    double ft = 0, lo = d && d->band_hz > 0 ? d->band_hz : GAL_DAMPING_BAND_HZ;
+    const gal_family t = GAL_FAMILY_TORSIONAL;
+    int n = a->rod->ndof, want[GAL_FAMILY_COUNT] = {0};
+    *nadd = 0;
+    for (int j = 0; j < nm; j++)
+        if (a->md->mode[a->sel[j]].family == t) ft = fmax(ft, a->md->mode[a->sel[j]].frequency_hz);
+    double hi = GAL_ROM_THIRD_TORSION * ft * (1 + GAL_ROM_THIRD_TORSION_SLACK);
+    if (!(hi > lo) || room <= 0) return GAL_OK;
+    for (int k = 0; k < a->md->n; k++)
+        if (a->md->mode[k].family != GAL_FAMILY_AXIAL) want[a->md->mode[k].family]++;
+    want[t] = (int)ceil(GAL_ROM_THIRD_TORSION) * (want[t] > 0 ? want[t] : 1) + 2; /* ~ k f1 each */
+    gal_modes md;
+    memset(&md, 0, sizeof md);
+    int st = gal_modes_find(a->rod, a->q_eq, want, a->md->n + want[t] + 64, &md);
+    if (st) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", gal_error_message());
+        return gal_error(st, "reduced model: the torsional modes for the third-order set: %s", why);
+    }
+    for (int k = 0; k < md.n && *nadd < room; k++) {
+        const gal_mode *mo = &md.mode[k];
+        if (mo->family != t || !(mo->frequency_hz > lo && mo->frequency_hz <= hi)) continue;
+        int in = 0;
+        for (int j = 0; j < a->nsel; j++)
+            in |= a->md->mode[a->sel[j]].family == t &&
+                  fabs(a->md->mode[a->sel[j]].frequency_hz - mo->frequency_hz) <= 1e-6 * mo->frequency_hz;
+        if (!in) memcpy(X + (size_t)(*nadd)++ * n, md.shape + (size_t)k * n, (size_t)n * sizeof(double));
+    }
+    gal_modes_clear(&md);
+    return GAL_OK;
+}
+
 /* The cubic growth (rom_adapt.h): the basis back to the initial selection and extra vectors, plus
- * the third-order modal derivatives of the selected modes (their count into *corr); GAL_ROM_ELIMIT
+ * the third-order modal derivatives of the selected modes and the rod's torsional modes that their
+ * twist reaches above the damping's band (third_torsion; all counted into *corr); GAL_ROM_ELIMIT
  * with a message, nothing changed, when they are in the basis already or pass the cap. */
 static int third_growth(gal_rom_adapt *a, const gal_rom *old, const gal_rom_check *chk, int f, int *corr)
 {
@@ -357,15 +397,17 @@ static int third_growth(gal_rom_adapt *a, const gal_rom *old, const gal_rom_chec
                   a->third ? ": its third-order modal derivatives are in it" : ": their set passes the cap");
         return GAL_ROM_ELIMIT;
     }
-    double *X = malloc((size_t)n * (a->nextra0 + nt + GAL_ROM_EVENTS_MAX * 2) * sizeof(double));
+    int room = GAL_ROM_BASIS_CAP - basis_size(a, nm, a->nextra0 + nt), nadd = 0;
+    double *X = malloc((size_t)n * (a->nextra0 + nt + room + GAL_ROM_EVENTS_MAX * 2) * sizeof(double));
     if (!X) return gal_error(GAL_ENOMEM, "reduced model: out of memory");
     memcpy(X, a->extra, (size_t)n * a->nextra0 * sizeof(double));
     int st = third_derivatives(old, nm, X + (size_t)n * a->nextra0);
+    if (!st) st = third_torsion(a, nm, X + (size_t)n * (a->nextra0 + nt), room, &nadd);
     if (st) { free(X); return st; }
     free(a->extra);
-    a->extra = X, a->nextra = a->nextra0 + nt, a->nsel = nm, a->third = nt;
+    a->extra = X, a->nextra = a->nextra0 + nt + nadd, a->nsel = nm, a->third = nt;
     memset(a->corrected, 0, sizeof a->corrected);
-    *corr = nt;
+    *corr = nt + nadd;
     return GAL_OK;
 }
 

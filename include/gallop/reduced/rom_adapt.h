@@ -136,6 +136,21 @@ void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double 
  * past the share are untouched. Calibrated on tests/rom/ and the shipped and hard scenes
  * (BENCHMARKS.md, helpers misses2 and soft). */
 #define GAL_ROM_CUBIC_SHARE 0.3
+/* With the third-order set the cubic growth adds the rod's torsional modes above the structural
+ * damping's band up to GAL_ROM_THIRD_TORSION times the highest selected torsional mode's frequency
+ * (within GAL_ROM_THIRD_TORSION_SLACK; not selected ones; lowest first, within GAL_ROM_BASIS_CAP):
+ * the set's twist reaches those harmonics, and without the rod's own modes the basis holds them
+ * only as Ritz vectors mixed with stiff translations, whose frequency swings with the tension and
+ * which ring undamped, fed by the rod's nonlinear internal force (tests/rom/partridge_180_dshape.ini:
+ * a reduced mode at ~12 Hz, 0.93 of the rod's third torsional mode at 10.6 Hz, 2.3 deg of ringing,
+ * the twist 21-25% off and refused by GAL_ROM_BAND_WEIGHT's reading; with the modes to 24.7 Hz, the
+ * 6 of the 7 up to 8x that the cap keeps, valid and 0.1-1.1% off at 100 and 125 elements; up to 3x
+ * or 5x the frequency, 5.2% or 3.7% off at 125). Below the band the modal damping holds them and they are not added: on
+ * grosbeak_300_soft_gj (torsional modes every 0.589 Hz, 8x = 4.71 Hz, under the 5-Hz band: nothing
+ * added) adding them made it worse (1.2-2.4 Hz: twist 7.8% off, horizontal 18.5%; its 5.30-Hz 9th,
+ * which 9x would add: twist 0.90% against 0.17%). BENCHMARKS.md, issue 13, helper ring. */
+#define GAL_ROM_THIRD_TORSION 8.0
+#define GAL_ROM_THIRD_TORSION_SLACK 0.02
 #define GAL_ROM_CUBIC_SETTLE_S 20.0
 /* Read at every this-th check: it costs two tangents of the whole rod, about twice the residual
  * (tests/bench/bench_rom_step.c: 119 us against 59 at 100 elements); the orbit it watches repeats. */
