@@ -37,6 +37,8 @@ if set(p) == {0.5, 0.25}:
     need(d["amplitude_error"] == max(d["amplitude_errors"].values()), "amplitude_error the worst of the three")
 fw = d.get("full_window", {})
 need(fw.get("steady") is False and fw.get("drift", 0) > 0.05, "full_window: not steady (%s)" % fw)
+need(fw.get("moved") is False and fw.get("from_s", -1) >= 0 and fw.get("from_s") == fw.get("automatic_from_s"),
+     "full_window: a growing run's window is not moved, its start the automatic one (%s)" % fw)
 rows = list(csv.DictReader(open(sys.argv[2])))
 cols = rows[0].keys() if rows else []
 need(all(c in cols for c in ("full_vertical_m", "reduced_twist_deg", "full_p0.25_vertical_m", "reduced_p0.5_twist_deg")),

@@ -5,6 +5,7 @@
 #include "gallop/base/error.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* the measures' component of each family: vertical, horizontal, twist */
@@ -82,7 +83,8 @@ static void window_drift(const gal_sim_result *full, gal_compare_figures *c)
     c->window_drift = c->family_drift[GAL_CMP_VERTICAL];
 }
 
-int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, double from, gal_compare_figures *c)
+/* every figure of c over the window from `from` (< 0: the automatic one, window_from) */
+static int compare_over(const gal_sim_result *full, const gal_sim_result *red, double from, gal_compare_figures *c)
 {
     memset(c, 0, sizeof *c);
     if (full->nprobe != red->nprobe || full->nprobe < 1)
@@ -121,7 +123,31 @@ int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, doub
     c->amplitude_error = fmax(c->err_vertical, fmax(c->err_horizontal, c->err_twist));
     c->speedup = full->wall_time_s / red->wall_time_s;
     window_drift(full, c);
+    c->window_first_from_s = c->full.steady_from_s;
     return GAL_OK;
+}
+
+int gal_compare_runs(const gal_sim_result *full, const gal_sim_result *red, double from, gal_compare_figures *c)
+{
+    int st = compare_over(full, red, from, c);
+    if (st || from >= 0 || c->full_steady) return st;
+    /* the automatic window, the reference unsteady over it: later starts, while each half of the
+     * window holds GAL_CMP_WINDOW_PERIODS periods of the reference's vertical fundamental */
+    double t0 = c->full.steady_from_s, tend = full->nsamples * full->dt_out, f = c->full.frequency_hz[1];
+    gal_compare_figures *w = malloc(sizeof *w);
+    if (!w) return gal_error(GAL_ENOMEM, "out of memory");
+    for (int k = 1; k < GAL_CMP_WINDOW_TRIES && !st; k++) {
+        double from_k = t0 + k * (tend - t0) / GAL_CMP_WINDOW_STEPS;
+        if (!(f > 0) || 0.5 * (tend - from_k) * f < GAL_CMP_WINDOW_PERIODS) break;
+        st = compare_over(full, red, from_k, w);
+        if (!st && w->full_steady) {
+            *c = *w;
+            c->window_first_from_s = t0, c->window_moved = 1;
+            break;
+        }
+    }
+    free(w);
+    return st;
 }
 
 int gal_compare_reference(const gal_sim_result *full, double from, gal_compare_ref *h)

@@ -195,6 +195,9 @@ void gal_cli_print_compare(const gal_compare_figures *c, const char *twist, doub
            pct(b[2], c->err_horizontal), twist, pct(b[3], c->err_twist), c->speedup, setup_s);
     static const char *const fam[GAL_CMP_FAMILIES] = {"vertical", "horizontal", "twist"};
     static const char *const unit[GAL_CMP_FAMILIES] = {"m", "m", "deg"};
+    if (c->window_moved)
+        fprintf(stderr, "gallop compare: note: the full model is not steady from %.4g s (still settling); the runs "
+                "are compared over its steady part from %.4g s\n", c->window_first_from_s, c->full.steady_from_s);
     for (int f = 0; f < GAL_CMP_FAMILIES; f++)
         if (!c->family_steady[f])
             fprintf(stderr, "gallop compare: warning: the full model is not steady over the window (%s "

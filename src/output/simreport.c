@@ -273,6 +273,10 @@ static void json_compare_probes(gal_json *j, const gal_compare_figures *c)
     gal_json_kv_num(j, "twist_drift", c->family_drift[GAL_CMP_TWIST]);
     gal_json_key(j, "steady");
     gal_json_bool(j, c->full_steady);
+    gal_json_kv_num(j, "from_s", c->full.steady_from_s);
+    gal_json_kv_num(j, "automatic_from_s", c->window_first_from_s);
+    gal_json_key(j, "moved");
+    gal_json_bool(j, c->window_moved);
     gal_json_obj_end(j);
     gal_json_key(j, "headline_probes");
     gal_json_obj_begin(j);

@@ -48,6 +48,16 @@ typedef struct gal_compare_figures {
     double family_first[GAL_CMP_FAMILIES], family_second[GAL_CMP_FAMILIES], family_drift[GAL_CMP_FAMILIES];
     int family_steady[GAL_CMP_FAMILIES];
     int full_steady;                   /* every family steady */
+    /* the window: its start is full.steady_from_s. The automatic one (gal_compare_runs with from < 0)
+     * starts at the reference's time to steady (at least the run's last third: gal_sim_measure);
+     * where the reference is unsteady over it, it moves later by a GAL_CMP_WINDOW_STEPS-th of its
+     * length, up to GAL_CMP_WINDOW_TRIES - 1 times while each half keeps GAL_CMP_WINDOW_PERIODS
+     * periods of the reference's vertical fundamental, to the first start over which the reference
+     * is steady (window_moved = 1; window_first_from_s the automatic start); none: the automatic
+     * window, unsteady, as before. A window given (from >= 0) is kept. Chosen on the reference
+     * alone: the reduced run does not move it. */
+    double window_first_from_s;
+    int window_moved;
     int nprobe;
     gal_compare_probe probe[GAL_MAX_PROBES];
 } gal_compare_figures;
@@ -55,6 +65,9 @@ typedef struct gal_compare_figures {
 #define GAL_CMP_STEADY_DRIFT 0.05
 #define GAL_CMP_STEADY_H_OF_V 0.02
 #define GAL_CMP_STEADY_TWIST_DEG 3.0
+#define GAL_CMP_WINDOW_TRIES 3     /* the automatic start and two later ones */
+#define GAL_CMP_WINDOW_STEPS 4     /* each a quarter of the automatic window later */
+#define GAL_CMP_WINDOW_PERIODS 5.0 /* the least periods in each half of a moved window */
 
 /* A family whose full peak-to-peak is below these (a micrometre; a ten-thousandth of a degree) does
  * not move: its relative error (and the vertical one's frequency error) is NaN, written null and
