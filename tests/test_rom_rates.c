@@ -7,9 +7,8 @@
 #include "gallop/modes/modes.h"
 #include "gallop/reduced/rom.h"
 #include "gallop/statics/statics.h"
+#include "rom_sagged.h"
 
-static const gal_rod_params sagged = {.length = 150, .elements = 24, .EA = 3e7, .EI = 30, .GJ = 200, .mass = 1.6,
-                                      .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
 
 /* Free vibration from a large displacement of every mode, a Rayleigh damping, `steps` steps; then
  * V^T M a (a from gal_rom_full_rates) against fe - Cr v - fi at the state (no loads: fe = 0). */
@@ -18,12 +17,10 @@ static void rates_at(int hyper)
     gal_equilibrium eq;
     gal_modes md;
     int want[GAL_FAMILY_COUNT] = {3, 2, 1, 0}, sel[16], ns = 0;
-    if (gal_statics_solve(&sagged, GAL_BY_SAG, 4.0, NULL, &eq) || gal_modes_find(eq.rod, eq.q, want, 60, &md)) {
+    if (sagged_setup_modes(&eq, &md, want, 60, sel, 16, &ns)) {
         CHECK(0, "%s", gal_error_message());
         return;
     }
-    for (int k = 0; k < md.n && ns < 16; k++)
-        if (md.mode[k].selected) sel[ns++] = k;
     gal_rom_opts o;
     gal_rom_default_opts(&o);
     gal_damping *C = gal_damping_rayleigh_alloc(eq.rod, eq.q, 0.05, 0.002);

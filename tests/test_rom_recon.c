@@ -10,9 +10,8 @@
 #include "gallop/modes/modes.h"
 #include "gallop/reduced/rom.h"
 #include "gallop/statics/statics.h"
+#include "rom_sagged.h"
 
-static const gal_rod_params sagged = {.length = 150, .elements = 24, .EA = 3e7, .EI = 30, .GJ = 200, .mass = 1.6,
-                                      .polar_inertia = 1.6e-4, .gravity = 9.80665, .torsion = 1, .twist_clamped = 1};
 
 /* coordinates with zeros at the given pattern: k % 7 == z0 (in x) and k % 5 == z1 (in x') */
 static void coords(gal_rom *m, int z0, int z1)
@@ -28,12 +27,10 @@ static void test_reconstruct_and_project_bitwise(void)
     gal_equilibrium eq;
     gal_modes md;
     int want[GAL_FAMILY_COUNT] = {3, 2, 1, 0}, sel[16], ns = 0;
-    if (gal_statics_solve(&sagged, GAL_BY_SAG, 4.0, NULL, &eq) || gal_modes_find(eq.rod, eq.q, want, 60, &md)) {
+    if (sagged_setup_modes(&eq, &md, want, 60, sel, 16, &ns)) {
         CHECK(0, "%s", gal_error_message());
         return;
     }
-    for (int k = 0; k < md.n && ns < 16; k++)
-        if (md.mode[k].selected) sel[ns++] = k;
     gal_rom_opts o;
     gal_rom_default_opts(&o);
     o.hyper = 0, o.h = 0.05; /* every element: the internal force is the whole rod's, projected */
