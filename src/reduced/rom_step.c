@@ -34,7 +34,7 @@ static void mult(int r, const double *A, const double *x, double *y, int add)
 }
 
 /* b = A^-1 b from gal_dense_lu_factor's LU: gal_dense_lu_solve's operations in its order, the
- * forward substitution by rows (contiguous), four rows at a time */
+ * forward substitution by rows (contiguous), four rows at a time; each entry's sum in a register */
 static void lu_solve(const double *A, int r, const int *piv, double *b)
 {
     for (int k = 0; k < r; k++) { /* P b: every swap, in order, before L */
@@ -51,11 +51,17 @@ static void lu_solve(const double *A, int r, const int *piv, double *b)
         s2 -= l2[i] * b[i], s2 -= l2[i + 1] * b[i + 1], b[i + 2] = s2;
         s3 -= l3[i] * b[i], s3 -= l3[i + 1] * b[i + 1], s3 -= l3[i + 2] * b[i + 2], b[i + 3] = s3;
     }
-    for (; i < r; i++)
-        for (int k = 0; k < i; k++) b[i] -= A[(size_t)i * r + k] * b[k];
-    for (int k = r - 1; k >= 0; k--) {
-        for (int j = k + 1; j < r; j++) b[k] -= A[(size_t)k * r + j] * b[j];
-        b[k] /= A[(size_t)k * r + k];
+    for (; i < r; i++) {
+        const double *li = A + (size_t)i * r;
+        double s = b[i];
+        for (int k = 0; k < i; k++) s -= li[k] * b[k];
+        b[i] = s;
+    }
+    for (int k = r - 1; k >= 0; k--) { /* b_k = (b_k - U_kj b_j, j = k+1 .. r-1 in order) / U_kk */
+        const double *uk = A + (size_t)k * r;
+        double s = b[k];
+        for (int j = k + 1; j < r; j++) s -= uk[j] * b[j];
+        b[k] = s / uk[k];
     }
 }
 
