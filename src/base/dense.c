@@ -13,11 +13,13 @@
 #include <stddef.h>
 
 /* A(i,k) -= sum_m L(i,m) U(m,k), m < k in order, for the rows i = k .. r-1: four rows a pass
- * (each its own sum, sharing the loads of U's column k) */
-static void column_update(double *A, int r, int k)
+ * (each its own sum, sharing the loads of U's column k). Returns the pivot row: the first i with
+ * the largest |A(i,k)| (compared in increasing i, as the entries come). */
+static int column_update(double *A, int r, int k)
 {
     const double *uk = A + k; /* U(m,k) = uk[m r] */
-    int i = k;
+    int i = k, p = k;
+    double best = 0; /* |A(k,k)| once brought up to date */
     for (; i + 4 <= r; i += 4) {
         double *a0 = A + (size_t)i * r, *a1 = a0 + r, *a2 = a1 + r, *a3 = a2 + r;
         double s0 = a0[k], s1 = a1[k], s2 = a2[k], s3 = a3[k];
@@ -26,12 +28,20 @@ static void column_update(double *A, int r, int k)
             s0 -= a0[m] * u, s1 -= a1[m] * u, s2 -= a2[m] * u, s3 -= a3[m] * u;
         }
         a0[k] = s0, a1[k] = s1, a2[k] = s2, a3[k] = s3;
+        if (i == k) best = fabs(s0);
+        if (fabs(s0) > best) best = fabs(s0), p = i;
+        if (fabs(s1) > best) best = fabs(s1), p = i + 1;
+        if (fabs(s2) > best) best = fabs(s2), p = i + 2;
+        if (fabs(s3) > best) best = fabs(s3), p = i + 3;
     }
     for (; i < r; i++) {
         double *ai = A + (size_t)i * r, s = ai[k];
         for (int m = 0; m < k; m++) s -= ai[m] * uk[(size_t)m * r];
         ai[k] = s;
+        if (i == k) best = fabs(s);
+        if (fabs(s) > best) best = fabs(s), p = i;
     }
+    return p;
 }
 
 /* A(k,j) -= sum_m L(k,m) U(m,j), m < k in order, for the columns j = k+1 .. r-1: eight columns a
@@ -52,20 +62,33 @@ static void row_update(double *A, int r, int k)
         ak[j] = s0, ak[j + 1] = s1, ak[j + 2] = s2, ak[j + 3] = s3;
         ak[j + 4] = s4, ak[j + 5] = s5, ak[j + 6] = s6, ak[j + 7] = s7;
     }
-    for (; j < r; j++) {
-        double s = ak[j];
-        for (int m = 0; m < k; m++) s -= ak[m] * A[(size_t)m * r + j];
-        ak[j] = s;
+    if (j + 4 <= r) {
+        double s0 = ak[j], s1 = ak[j + 1], s2 = ak[j + 2], s3 = ak[j + 3];
+        for (int m = 0; m < k; m++) {
+            const double *um = A + (size_t)m * r + j;
+            double l = ak[m];
+            s0 -= l * um[0], s1 -= l * um[1], s2 -= l * um[2], s3 -= l * um[3];
+        }
+        ak[j] = s0, ak[j + 1] = s1, ak[j + 2] = s2, ak[j + 3] = s3;
+        j += 4;
+    }
+    if (j < r) { /* the last one to three: their sums side by side, m outside */
+        double s[3] = {0, 0, 0};
+        int t = r - j;
+        for (int c = 0; c < t; c++) s[c] = ak[j + c];
+        for (int m = 0; m < k; m++) {
+            const double *um = A + (size_t)m * r + j;
+            double l = ak[m];
+            for (int c = 0; c < t; c++) s[c] -= l * um[c];
+        }
+        for (int c = 0; c < t; c++) ak[j + c] = s[c];
     }
 }
 
 int gal_dense_lu_factor(double *A, int r, int *piv)
 {
     for (int k = 0; k < r; k++) {
-        column_update(A, r, k);
-        int p = k; /* the first largest |A(i,k)|, i >= k */
-        for (int i = k + 1; i < r; i++)
-            if (fabs(A[(size_t)i * r + k]) > fabs(A[(size_t)p * r + k])) p = i;
+        int p = column_update(A, r, k); /* the first largest |A(i,k)|, i >= k */
         piv[k] = p;
         if (!(fabs(A[(size_t)p * r + k]) > 0)) return -1;
         if (p != k) /* whole rows: L's finished part and the part not yet brought up to date */

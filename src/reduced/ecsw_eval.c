@@ -123,10 +123,23 @@ static void tangent_element(int r, const int *idx, double w, const double *H, co
             yp[j] = y0, yp[j + 1] = y1, yp[j + 2] = y2, yp[j + 3] = y3;
             yp[j + 4] = y4, yp[j + 5] = y5, yp[j + 6] = y6, yp[j + 7] = y7;
         }
-        for (; j < r; j++) {
-            double y = yp[j];
-            for (int c = 0; c < nh; c++) y = y + hp[c] * bp[c][j];
-            yp[j] = y;
+        if (j + 4 <= r) {
+            double y0 = yp[j], y1 = yp[j + 1], y2 = yp[j + 2], y3 = yp[j + 3];
+            for (int c = 0; c < nh; c++) {
+                const double *b = bp[c] + j;
+                double h = hp[c];
+                y0 = y0 + h * b[0], y1 = y1 + h * b[1], y2 = y2 + h * b[2], y3 = y3 + h * b[3];
+            }
+            yp[j] = y0, yp[j + 1] = y1, yp[j + 2] = y2, yp[j + 3] = y3;
+            j += 4;
+        }
+        if (j < r) { /* the last one to three entries: their sums side by side, c outside */
+            double y[3] = {0, 0, 0};
+            int t = r - j;
+            for (int e = 0; e < t; e++) y[e] = yp[j + e];
+            for (int c = 0; c < nh; c++)
+                for (int e = 0; e < t; e++) y[e] = y[e] + hp[c] * bp[c][j + e];
+            for (int e = 0; e < t; e++) yp[j + e] = y[e];
         }
     }
 }
