@@ -103,13 +103,26 @@ int gal_dense_lu_factor(double *A, int r, int *piv)
     return 0;
 }
 
+/* P b, then the forward substitution by rows (contiguous), four rows a pass, then the backward
+ * one; each entry's sum in a register, its subtractions in increasing k (forward) or j (backward):
+ * the operations of the solve by columns in their order (tests/test_dense.c) */
 void gal_dense_lu_solve(const double *A, int r, const int *piv, double *b)
 {
     for (int k = 0; k < r; k++) { /* P b: every swap, in order, before L */
         double t = b[piv[k]];
         b[piv[k]] = b[k], b[k] = t;
     }
-    for (int i = 1; i < r; i++) { /* b_i -= L_ik b_k, k = 0 .. i-1 in order, in a register */
+    int i = 1;
+    for (; i + 4 <= r; i += 4) { /* b_i -= L_ik b_k, k = 0 .. i-1 in order */
+        const double *l0 = A + (size_t)i * r, *l1 = l0 + r, *l2 = l1 + r, *l3 = l2 + r;
+        double s0 = b[i], s1 = b[i + 1], s2 = b[i + 2], s3 = b[i + 3];
+        for (int k = 0; k < i; k++) s0 -= l0[k] * b[k], s1 -= l1[k] * b[k], s2 -= l2[k] * b[k], s3 -= l3[k] * b[k];
+        b[i] = s0;
+        s1 -= l1[i] * b[i], b[i + 1] = s1;
+        s2 -= l2[i] * b[i], s2 -= l2[i + 1] * b[i + 1], b[i + 2] = s2;
+        s3 -= l3[i] * b[i], s3 -= l3[i + 1] * b[i + 1], s3 -= l3[i + 2] * b[i + 2], b[i + 3] = s3;
+    }
+    for (; i < r; i++) {
         const double *li = A + (size_t)i * r;
         double s = b[i];
         for (int k = 0; k < i; k++) s -= li[k] * b[k];
