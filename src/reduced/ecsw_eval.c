@@ -90,7 +90,10 @@ static void curvature(const gal_rom *m, const gal_rom_hyper_set *S, const double
         }
 }
 
-/* Y_p += w sum_q H(p, q) B_q over element k's entries p, q (Y, B: nu x r, row-major). */
+/* Y_p += w sum_q H(p, q) B_q over element k's entries p, q (Y, B: nu x r, row-major): for each p,
+ * eight entries of Y_p a pass held in registers over the q's (each entry's sums in increasing q,
+ * one product and one addition at a time, the zero H(p, q) skipped: the numbers of the pass over
+ * q outside, stored once per p). */
 static void tangent_element(int r, const int *idx, double w, const double *H, const double *B, double *Y)
 {
     const int NQ = GAL_ROD_ELEMENT_NQ;
@@ -98,18 +101,45 @@ static void tangent_element(int r, const int *idx, double w, const double *H, co
     for (int a = 0; a < NQ; a++)
         if (idx[a] >= 0) loc[nl++] = a;
     for (int p = 0; p < nl; p++) {
-        double *yp = Y + (size_t)idx[loc[p]] * r;
-        for (int q = 0; q < nl; q++) {
+        double *yp = Y + (size_t)idx[loc[p]] * r, hp[GAL_ROD_ELEMENT_NQ];
+        const double *bp[GAL_ROD_ELEMENT_NQ];
+        int nh = 0;
+        for (int q = 0; q < nl; q++) { /* the row's nonzero w H(p, q) and their rows of B */
             double hpq = w * H[loc[p] * NQ + loc[q]];
             if (hpq == 0) continue;
-            const double *bq = B + (size_t)idx[loc[q]] * r;
-            int j = 0; /* four entries a pass (each its own sum: the same numbers, paired by the compiler) */
-            for (; j + 4 <= r; j += 4) {
-                double y0 = yp[j] + hpq * bq[j], y1 = yp[j + 1] + hpq * bq[j + 1];
-                double y2 = yp[j + 2] + hpq * bq[j + 2], y3 = yp[j + 3] + hpq * bq[j + 3];
-                yp[j] = y0, yp[j + 1] = y1, yp[j + 2] = y2, yp[j + 3] = y3;
+            hp[nh] = hpq, bp[nh++] = B + (size_t)idx[loc[q]] * r;
+        }
+        if (!nh) continue;
+        int j = 0;
+        for (; j + 8 <= r; j += 8) {
+            double y0 = yp[j], y1 = yp[j + 1], y2 = yp[j + 2], y3 = yp[j + 3];
+            double y4 = yp[j + 4], y5 = yp[j + 5], y6 = yp[j + 6], y7 = yp[j + 7];
+            for (int c = 0; c < nh; c++) {
+                const double *b = bp[c] + j;
+                double h = hp[c];
+                y0 = y0 + h * b[0], y1 = y1 + h * b[1], y2 = y2 + h * b[2], y3 = y3 + h * b[3];
+                y4 = y4 + h * b[4], y5 = y5 + h * b[5], y6 = y6 + h * b[6], y7 = y7 + h * b[7];
             }
-            for (; j < r; j++) yp[j] += hpq * bq[j];
+            yp[j] = y0, yp[j + 1] = y1, yp[j + 2] = y2, yp[j + 3] = y3;
+            yp[j + 4] = y4, yp[j + 5] = y5, yp[j + 6] = y6, yp[j + 7] = y7;
+        }
+        if (j + 4 <= r) {
+            double y0 = yp[j], y1 = yp[j + 1], y2 = yp[j + 2], y3 = yp[j + 3];
+            for (int c = 0; c < nh; c++) {
+                const double *b = bp[c] + j;
+                double h = hp[c];
+                y0 = y0 + h * b[0], y1 = y1 + h * b[1], y2 = y2 + h * b[2], y3 = y3 + h * b[3];
+            }
+            yp[j] = y0, yp[j + 1] = y1, yp[j + 2] = y2, yp[j + 3] = y3;
+            j += 4;
+        }
+        if (j < r) { /* the last one to three entries: their sums side by side, c outside */
+            double y[3] = {0, 0, 0};
+            int t = r - j;
+            for (int e = 0; e < t; e++) y[e] = yp[j + e];
+            for (int c = 0; c < nh; c++)
+                for (int e = 0; e < t; e++) y[e] = y[e] + hp[c] * bp[c][j + e];
+            for (int e = 0; e < t; e++) yp[j + e] = y[e];
         }
     }
 }

@@ -10,6 +10,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* column j of [Q c] (Q m x p column-major, c the column p) */
+static double *column(double *Q, int m, int p, double *c, int j)
+{
+    return j < p ? Q + (size_t)j * m : c;
+}
+
 /* min |A_P z - b| over the p columns P of A (m x n, column-major) by Householder QR; Q (m x p) and
  * c (m) are scratch. Returns 0, or -1 when A_P is rank deficient. */
 static int ls_solve(int m, const double *A, const double *b, const int *P, int p, double *z, double *Q, double *c)
@@ -25,8 +31,17 @@ static int ls_solve(int m, const double *A, const double *b, const int *P, int p
         qk[k] -= alpha;
         double vv = 0; /* |v|^2 */
         for (int i = k; i < m; i++) vv += qk[i] * qk[i];
-        for (int j = k + 1; j <= p; j++) { /* apply H = I - 2 v v^T / |v|^2 to column j and to c */
-            double *y = j < p ? Q + (size_t)j * m : c, d = 0;
+        int j = k + 1; /* apply H = I - 2 v v^T / |v|^2 to the columns j > k and to c */
+        for (; j + 4 <= p + 1; j += 4) { /* four columns a pass: four independent sums over i */
+            double *y0 = column(Q, m, p, c, j), *y1 = column(Q, m, p, c, j + 1);
+            double *y2 = column(Q, m, p, c, j + 2), *y3 = column(Q, m, p, c, j + 3);
+            double d0 = 0, d1 = 0, d2 = 0, d3 = 0;
+            for (int i = k; i < m; i++) d0 += qk[i] * y0[i], d1 += qk[i] * y1[i], d2 += qk[i] * y2[i], d3 += qk[i] * y3[i];
+            d0 *= 2 / vv, d1 *= 2 / vv, d2 *= 2 / vv, d3 *= 2 / vv;
+            for (int i = k; i < m; i++) y0[i] -= d0 * qk[i], y1[i] -= d1 * qk[i], y2[i] -= d2 * qk[i], y3[i] -= d3 * qk[i];
+        }
+        for (; j <= p; j++) {
+            double *y = column(Q, m, p, c, j), d = 0;
             for (int i = k; i < m; i++) d += qk[i] * y[i];
             d *= 2 / vv;
             for (int i = k; i < m; i++) y[i] -= d * qk[i];
@@ -77,12 +92,21 @@ int gal_nnls(int m, int n, const double *A, const double *b, double tol, int pma
         /* the column most aligned with the residual, w_j = a_j^T r, among the active (x_j = 0) */
         int jb = -1;
         double wb = 0;
-        for (int j = 0; j < n; j++) {
-            if (inP[j]) continue;
-            const double *a = A + (size_t)j * m;
-            double w = 0;
-            for (int i = 0; i < m; i++) w += a[i] * r[i];
-            if (w > wb) wb = w, jb = j;
+        for (int j0 = 0; j0 < n; j0 += 4) { /* four columns' sums at a time, compared in order */
+            double w[4] = {0, 0, 0, 0};
+            int nj = n - j0 < 4 ? n - j0 : 4;
+            if (nj == 4) {
+                const double *a0 = A + (size_t)j0 * m, *a1 = a0 + m, *a2 = a1 + m, *a3 = a2 + m;
+                double w0 = 0, w1 = 0, w2 = 0, w3 = 0;
+                for (int i = 0; i < m; i++) w0 += a0[i] * r[i], w1 += a1[i] * r[i], w2 += a2[i] * r[i], w3 += a3[i] * r[i];
+                w[0] = w0, w[1] = w1, w[2] = w2, w[3] = w3;
+            } else
+                for (int t = 0; t < nj; t++) {
+                    const double *a = A + (size_t)(j0 + t) * m;
+                    for (int i = 0; i < m; i++) w[t] += a[i] * r[i];
+                }
+            for (int t = 0; t < nj; t++)
+                if (!inP[j0 + t] && w[t] > wb) wb = w[t], jb = j0 + t;
         }
         if (jb < 0) break; /* Kuhn-Tucker: no descent direction left */
         P[p++] = jb, inP[jb] = 1;

@@ -33,32 +33,6 @@ static void mult(int r, const double *A, const double *x, double *y, int add)
     }
 }
 
-/* b = A^-1 b from gal_dense_lu_factor's LU: gal_dense_lu_solve's operations in its order, the
- * forward substitution by rows (contiguous), four rows at a time */
-static void lu_solve(const double *A, int r, const int *piv, double *b)
-{
-    for (int k = 0; k < r; k++) { /* P b: every swap, in order, before L */
-        double t = b[piv[k]];
-        b[piv[k]] = b[k], b[k] = t;
-    }
-    int i = 1;
-    for (; i + 4 <= r; i += 4) { /* b_i -= L_ik b_k, k = 0 .. i-1 in order */
-        const double *l0 = A + (size_t)i * r, *l1 = l0 + r, *l2 = l1 + r, *l3 = l2 + r;
-        double s0 = b[i], s1 = b[i + 1], s2 = b[i + 2], s3 = b[i + 3];
-        for (int k = 0; k < i; k++) s0 -= l0[k] * b[k], s1 -= l1[k] * b[k], s2 -= l2[k] * b[k], s3 -= l3[k] * b[k];
-        b[i] = s0;
-        s1 -= l1[i] * b[i], b[i + 1] = s1;
-        s2 -= l2[i] * b[i], s2 -= l2[i + 1] * b[i + 1], b[i + 2] = s2;
-        s3 -= l3[i] * b[i], s3 -= l3[i + 1] * b[i + 1], s3 -= l3[i + 2] * b[i + 2], b[i + 3] = s3;
-    }
-    for (; i < r; i++)
-        for (int k = 0; k < i; k++) b[i] -= A[(size_t)i * r + k] * b[k];
-    for (int k = r - 1; k >= 0; k--) {
-        for (int j = k + 1; j < r; j++) b[k] -= A[(size_t)k * r + j] * b[j];
-        b[k] /= A[(size_t)k * r + k];
-    }
-}
-
 int gal_rom_start(gal_rom *m, double t, const double *q, const double *v)
 {
     const gal_rod *rod = m->rod;
@@ -215,7 +189,7 @@ static void carry_correction(gal_rom *m, double h)
     int r = m->r;
     double *xs = m->fdg; /* scratch: rho_inf < 1 has no discrete gradient */
     for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
-    lu_solve(m->J, r, m->piv, m->da);
+    gal_dense_lu_solve(m->J, r, m->piv, m->da);
     memcpy(xs, m->x1, (size_t)r * sizeof(double));
     for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
     newmark(m, h);
@@ -330,7 +304,7 @@ static int newton(gal_rom *m, double h)
             fresh = 0;
         }
         for (int k = 0; k < r; k++) m->da[k] = -m->res[k];
-        lu_solve(m->J, r, m->piv, m->da);
+        gal_dense_lu_solve(m->J, r, m->piv, m->da);
         for (int k = 0; k < r; k++) m->a1[k] += m->da[k];
         m->newton_iterations++;
     }
