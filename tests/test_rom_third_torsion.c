@@ -40,7 +40,7 @@ static void third_case(gal_data *d)
     gal_rom_opts ro;
     gal_rom_default_opts(&ro);
     ro.h = 0.01, ro.damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element};
+    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
     gal_rom_adapt a;
     gal_rom *m = NULL;
     gal_rom_check chk;
