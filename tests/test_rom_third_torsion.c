@@ -106,7 +106,8 @@ static void third_case(gal_data *d)
     CHECK(gal_rom_adapt_residual(&a, m, &chk, w) == GAL_OK, "%s", gal_error_message());
     int kr = -1;
     for (int k = 0; k < a.band.n; k++)
-        if (kr < 0 || a.band.share[(size_t)k * GAL_FAMILY_COUNT + t] > a.band.share[(size_t)kr * GAL_FAMILY_COUNT + t]) kr = k;
+        if (kr < 0 || a.band.share[(size_t)k * GAL_FAMILY_COUNT + t] > a.band.share[(size_t)kr * GAL_FAMILY_COUNT + t])
+            kr = k;
     CHECK(kr >= 0, "no band mode in the %d-vector basis", m->r);
     if (kr < 0) goto done;
     printf("    ringing along the %.3f Hz band mode (twist share %.3g) of the %d-vector basis\n",
@@ -131,7 +132,8 @@ static void third_case(gal_data *d)
         else out++;
     }
     CHECK(order, "a torsional mode above one left out is in the basis (not lowest first)");
-    CHECK(added >= 1 && out >= 1 && m->r == GAL_ROM_BASIS_CAP, "%d modes added, %d left out, %d vectors", added, out, m->r);
+    CHECK(added >= 1 && out >= 1 && m->r == GAL_ROM_BASIS_CAP, "%d modes added, %d left out, %d vectors", added, out,
+          m->r);
     CHECK(a.ev[1].corrections == added && a.ev[1].basis_before == r1 && a.ev[1].basis_after == m->r,
           "event: %d vectors added (%d modes), %d -> %d", a.ev[1].corrections, added, a.ev[1].basis_before,
           a.ev[1].basis_after);
