@@ -131,7 +131,8 @@ void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double 
  * extra vectors; the growths' corrections and modes dropped) plus the third-order modal derivatives
  * of the selected modes, -K0^-1 (d2K/d eta_j d eta_k) phi_i for i <= j <= k (nsel (nsel+1)(nsel+2)/6
  * vectors, 56 for 6 modes), and runs it again from the start; a set past GAL_ROM_BASIS_CAP, and
- * any later trip (cubic or not), is not grown on (GAL_ROM_ELIMIT): a correction or mode grown past
+ * any later trip (cubic or not; but the band's, GAL_ROM_BAND_WEIGHT), is not grown on
+ * (GAL_ROM_ELIMIT): a correction or mode grown past
  * the third-order set left grosbeak_300_soft_gj at 80 elements valid and 7.3% off in twist. Spans whose check never reads the cubic part
  * past the share are untouched. Calibrated on tests/rom/ and the shipped and hard scenes
  * (BENCHMARKS.md, helpers misses2 and soft). */
