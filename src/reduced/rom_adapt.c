@@ -383,6 +383,73 @@ static int third_torsion(gal_rom_adapt *a, int nm, double *X, int room, int *nad
     return GAL_OK;
 }
 
+/* The ringing growth (rom_adapt.h, GAL_ROM_RING_OUTSIDE): the rod's torsional modes above the
+ * damping's band that old's basis does not hold (their M-norm outside it over GAL_ROM_RING_OUTSIDE),
+ * lowest first, as many as GAL_ROM_BASIS_CAP leaves room for beside old's basis, appended to the
+ * extra vectors (counted into *corr); GAL_ROM_ELIMIT with a message, nothing changed, when none. */
+static int ring_growth(gal_rom_adapt *a, const gal_rom *old, const gal_rom_check *chk, int *corr)
+{
+    const gal_damping *d = a->o.damping;
+    const gal_family t = GAL_FAMILY_TORSIONAL;
+    double lo = d && d->band_hz > 0 ? d->band_hz : GAL_DAMPING_BAND_HZ;
+    int n = a->rod->ndof, room = GAL_ROM_BASIS_CAP - old->r, nadd = 0, st = GAL_OK;
+    double *X = NULL, *w = NULL;
+    gal_modes md;
+    memset(&md, 0, sizeof md);
+    if (room > 0) {
+        int want[GAL_FAMILY_COUNT] = {0};
+        for (int k = 0; k < a->md->n; k++)
+            if (a->md->mode[k].family != GAL_FAMILY_AXIAL) want[a->md->mode[k].family]++;
+        /* those third_torsion reached (~ k f1 each) and room more */
+        want[t] = (int)ceil(GAL_ROM_THIRD_TORSION) * (want[t] > 0 ? want[t] : 1) + 2 + room;
+        if ((st = gal_modes_find(a->rod, a->q_eq, want, a->md->n + want[t] + 64, &md))) {
+            char why[256];
+            snprintf(why, sizeof why, "%s", gal_error_message());
+            return gal_error(st, "reduced model: the torsional modes for the ringing basis: %s", why);
+        }
+        X = malloc((size_t)n * (a->nextra + room) * sizeof(double));
+        w = malloc((size_t)(2 * n + old->r) * sizeof(double));
+        if (!X || !w) st = gal_error(GAL_ENOMEM, "reduced model: out of memory");
+        else memcpy(X, a->extra, (size_t)n * a->nextra * sizeof(double));
+    }
+    for (int k = 0; !st && X && k < md.n && nadd < room; k++) {
+        const gal_mode *mo = &md.mode[k];
+        if (mo->family != t || !(mo->frequency_hz > lo)) continue;
+        double *u = w, *Mu = w + n, *c = w + 2 * n, out = 0;
+        memcpy(u, md.shape + (size_t)k * n, (size_t)n * sizeof(double));
+        for (int pass = 0; pass < 2; pass++) { /* minus its part in old's basis (M-orthonormal), twice */
+            gal_rod_mass_mult(a->rod, u, Mu);
+            for (int i = 0; i < old->r; i++) {
+                double s = 0;
+                for (int j = 0; j < n; j++) s += old->V[(size_t)i * n + j] * Mu[j];
+                c[i] = s;
+            }
+            for (int i = 0; i < old->r; i++)
+                for (int j = 0; j < n; j++) u[j] -= c[i] * old->V[(size_t)i * n + j];
+        }
+        gal_rod_mass_mult(a->rod, u, Mu);
+        for (int j = 0; j < n; j++) out += u[j] * Mu[j];
+        if (sqrt(fmax(out, 0)) > GAL_ROM_RING_OUTSIDE)
+            memcpy(X + (size_t)(a->nextra + nadd++) * n, md.shape + (size_t)k * n, (size_t)n * sizeof(double));
+    }
+    gal_modes_clear(&md);
+    free(w);
+    if (st || !nadd) {
+        free(X);
+        if (st) return st;
+        gal_error(GAL_EFAIL, "the basis (%d vectors) rings undamped: its reduced modes above the damping's band carry "
+                  "a twist of %.3g of the twist's scale (times %g) that the full model does not hold (%s)", old->r,
+                  chk->ring / GAL_ROM_BAND_WEIGHT, GAL_ROM_BAND_WEIGHT,
+                  room > 0 ? "the rod's torsional modes computed above the band are in it"
+                           : "it cannot grow by the rod's torsional modes: it is at its cap");
+        return GAL_ROM_ELIMIT;
+    }
+    free(a->extra);
+    a->extra = X, a->nextra += nadd;
+    *corr = nadd;
+    return GAL_OK;
+}
+
 /* The cubic growth (rom_adapt.h): the basis back to the initial selection and extra vectors, plus
  * the third-order modal derivatives of the selected modes and the rod's torsional modes that their
  * twist reaches above the damping's band (third_torsion; all counted into *corr); GAL_ROM_ELIMIT
@@ -425,13 +492,10 @@ int gal_rom_adapt_grow(gal_rom_adapt *a, gal_rom **m, const gal_rom_check *chk, 
     int st = GAL_OK, mode = -1, corr = 0, cubic = f <= GAL_FAMILY_HORIZONTAL && chk->rel[f] == chk->cubic[f] / GAL_ROM_CUBIC_SHARE;
     int nsel_was = a->nsel, nextra_was = a->nextra;
     double t = old->t, *q = NULL;
-    if (f == GAL_FAMILY_TORSIONAL && chk->ring > 0 && chk->rel[f] == chk->ring) { /* rom_adapt.h: not grown on */
-        gal_error(GAL_EFAIL, "the basis (%d vectors) rings undamped: its reduced modes above the damping's band carry "
-                  "a twist of %.3g of the twist's scale (times %g) that the full model does not hold", old->r,
-                  chk->ring / GAL_ROM_BAND_WEIGHT, GAL_ROM_BAND_WEIGHT);
-        return GAL_ROM_ELIMIT;
-    }
-    if (cubic) {
+    if (f == GAL_FAMILY_TORSIONAL && chk->ring > 0 && chk->rel[f] == chk->ring) { /* rom_adapt.h: the ringing growth */
+        if ((st = ring_growth(a, old, chk, &corr))) return st;
+        cubic = 1; /* run again from the start as the cubic growth is: no correction, no mode */
+    } else if (cubic) {
         if ((st = third_growth(a, old, chk, f, &corr))) return st;
     } else if (a->third) { /* past the third-order set, a correction or mode is not grown (rom_adapt.h) */
         gal_error(GAL_EFAIL, "the basis (%d vectors) holds the modes' third-order modal derivatives and the %s "

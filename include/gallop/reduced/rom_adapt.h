@@ -131,7 +131,8 @@ void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double 
  * extra vectors; the growths' corrections and modes dropped) plus the third-order modal derivatives
  * of the selected modes, -K0^-1 (d2K/d eta_j d eta_k) phi_i for i <= j <= k (nsel (nsel+1)(nsel+2)/6
  * vectors, 56 for 6 modes), and runs it again from the start; a set past GAL_ROM_BASIS_CAP, and
- * any later trip (cubic or not), is not grown on (GAL_ROM_ELIMIT): a correction or mode grown past
+ * any later trip (cubic or not; but the band's, GAL_ROM_BAND_WEIGHT), is not grown on
+ * (GAL_ROM_ELIMIT): a correction or mode grown past
  * the third-order set left grosbeak_300_soft_gj at 80 elements valid and 7.3% off in twist. Spans whose check never reads the cubic part
  * past the share are untouched. Calibrated on tests/rom/ and the shipped and hard scenes
  * (BENCHMARKS.md, helpers misses2 and soft). */
@@ -168,9 +169,19 @@ void gal_rom_adapt_replay_from(gal_rom_adapt *a, const double *q0, const double 
  * 0.036-0.058 at 100 and 125 elements. Not read on a basis without that set: a grown torsional mode
  * (a rod mode) rings while a growth's transient decays, and a run that ends within read 0.23-0.56
  * there (partridge at 40 elements and at 150 m; BENCHMARKS.md, issue 13, helper partridge). A trip
- * by it is not grown on (past the third-order set nothing is): the run is refused
- * (GAL_ROM_ELIMIT). */
+ * by it grows the basis by the rod's own torsional modes above the band that it does not hold (M-norm
+ * outside it over GAL_ROM_RING_OUTSIDE; a mode the basis holds reads ~1e-15, a mode computed again
+ * ~1e-3), lowest first, as many as GAL_ROM_BASIS_CAP leaves room for beside the basis's vectors
+ * (after deflation), and runs it again from the start, as the cubic growth does; with no room or no
+ * such mode the run is refused (GAL_ROM_ELIMIT). The ringing Ritz vectors are the rod's torsional
+ * harmonics the cap kept out of the cubic growth (tests/rom/drake_300_turbulent.ini at 125
+ * elements rang at 11.3 Hz, its 11.23-Hz torsional mode left out; ibis_250_turbulent at 14.17 Hz,
+ * its 13.98-Hz one) or higher ones (partridge_180_dshape at 14 m/s, at 25 and 37 Hz with the modes
+ * to 28 Hz in): the modes up to the ringing's frequency alone left partridge refused by its
+ * residual (0.103) and 9.7% off in twist; to the cap (90 vectors, modes to 66 Hz) valid and within
+ * 0.1% (BENCHMARKS.md, issue 13, helper ring2). Past the third-order set nothing else is grown. */
 #define GAL_ROM_BAND_WEIGHT 0.5
+#define GAL_ROM_RING_OUTSIDE 1e-2
 int gal_rom_adapt_residual(gal_rom_adapt *a, gal_rom *m, gal_rom_check *chk, double *du);
 
 /* Grow the basis of *m after the check chk (du: its correction direction, ndof) failed at the
