@@ -8,6 +8,7 @@
 #include "gallop/base/error.h"
 #include "gallop/loads/loads.h"
 #include "gallop/reduced/rom.h"
+#include "gallop/reduced/rom_adapt.h"
 #include "gallop/run/forward.h"
 #include "gallop/run/sim.h"
 #include "gallop/scene/scene.h"
@@ -51,6 +52,19 @@ static inline gal_rom *rom_fixture(gal_sim_setup *s, gal_rom_opts *ro)
     if (m && gal_rom_start(m, 0, d->q_start, d->v_start)) gal_rom_free(m), m = NULL;
     CHECK(m != NULL, "%s", gal_error_message());
     return m;
+}
+
+/* The adaptation (rom_adapt.h) of a set-up scene's data d at a step of 0.01 s, its damping the
+ * scene's, under the scene's loads, relaxation off (every trip grows at once): *ro and *F, which it
+ * keeps, filled here; gal_rom_adapt_init's status (the caller checks it). */
+static inline int adapt_fixture(gal_data *d, gal_rom_opts *ro, gal_force *F, gal_rom_adapt *a, gal_rom **m)
+{
+    gal_rom_default_opts(ro);
+    ro->h = 0.01, ro->damping = d->damping;
+    *F = (gal_force){gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
+    int st = gal_rom_adapt_init(a, m, d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, ro, F);
+    if (!st) a->relax = 0;
+    return st;
 }
 
 #endif

@@ -92,19 +92,16 @@ static int ring_along(gal_rom *m, double band_hz, gal_rom_band *b, double s)
 static void check_case(gal_data *d)
 {
     gal_rom_opts ro;
-    gal_rom_default_opts(&ro);
-    ro.h = 0.01, ro.damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
+    gal_force F;
     gal_rom_adapt a;
     gal_rom *m = NULL;
     gal_rom_check chk;
     gal_rom_band b = {0};
     int t = GAL_FAMILY_TORSIONAL, n = d->eq.rod->ndof, k;
     double *du = malloc((size_t)n * sizeof(double)), amp[GAL_FAMILY_COUNT], band = d->damping->band_hz, s = 0.7;
-    int st = du ? gal_rom_adapt_init(&a, &m, d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F) : GAL_ENOMEM;
+    int st = du ? adapt_fixture(d, &ro, &F, &a, &m) : GAL_ENOMEM;
     CHECK(st == GAL_OK, "%s", gal_error_message());
     if (st) { free(du); return; }
-    a.relax = 0;
     CHECK(gal_rom_start(m, 0, d->eq.q, NULL) == GAL_OK, "%s", gal_error_message());
     /* the initial basis: not read */
     CHECK((k = ring_along(m, band, &b, s)) >= 0, "no high mode");

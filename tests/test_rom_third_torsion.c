@@ -42,9 +42,7 @@ static double outside(const gal_rom *m, const double *phi, double *Mphi, double 
 static void third_case(gal_data *d)
 {
     gal_rom_opts ro;
-    gal_rom_default_opts(&ro);
-    ro.h = 0.01, ro.damping = d->damping;
-    gal_force F = {gal_loads_full, (void *)&d->loads, gal_loads_element, gal_loads_full_framed};
+    gal_force F;
     gal_rom_adapt a;
     gal_rom *m = NULL;
     gal_rom_check chk;
@@ -53,10 +51,9 @@ static void third_case(gal_data *d)
     const gal_family t = GAL_FAMILY_TORSIONAL;
     int n = d->eq.rod->ndof;
     double *w = malloc((size_t)3 * n * sizeof(double)), band = d->damping->band_hz, ft = 0;
-    int st = w ? gal_rom_adapt_init(&a, &m, d->eq.rod, d->eq.q, &d->md, d->sel, d->basis, &ro, &F) : GAL_ENOMEM;
+    int st = w ? adapt_fixture(d, &ro, &F, &a, &m) : GAL_ENOMEM;
     CHECK(st == GAL_OK, "%s", gal_error_message());
     if (st) { free(w); return; }
-    a.relax = 0;
     for (int j = 0; j < d->basis; j++)
         if (d->md.mode[d->sel[j]].family == t) ft = fmax(ft, d->md.mode[d->sel[j]].frequency_hz);
     double hi = GAL_ROM_THIRD_TORSION * ft * (1 + GAL_ROM_THIRD_TORSION_SLACK);
